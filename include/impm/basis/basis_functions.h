@@ -1,0 +1,390 @@
+#ifndef impm_basis_basis_functions_h
+#define impm_basis_basis_functions_h
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief The weighting between material points and grid nodes.
+   */
+  enum class BasisType
+  {
+    /** Standard MPM: the Q1 shape function evaluated at the point. */
+    standard_mpm,
+    /** GIMP: the Q1 shape function averaged over the point's domain. */
+    gimp
+  };
+
+  /**
+   * @brief Convert a scene's name of a basis ("standard MPM" or "GIMP").
+   *
+   * @param name The name as given in the scene.
+   * @return The basis type.
+   */
+  BasisType
+  basis_type_from_string(const std::string &name);
+
+  /**
+   * @brief One-dimensional weights between one node and one material point.
+   *
+   * All functions take the distance `d = x_p - x_v` of the point from the node
+   * and return the weight and its derivative with respect to the point's
+   * position `x_p` (which is the derivative with respect to the start-of-step
+   * coordinate in the formulation).
+   */
+  namespace Basis1D
+  {
+    /**
+     * @brief The Q1 hat function of a node, @f$N(d) = \max(0, 1-|d|/h)@f$.
+     */
+    inline double
+    hat(const double d, const double h)
+    {
+      const double a = std::abs(d);
+      return (a < h) ? 1. - a / h : 0.;
+    }
+
+    /**
+     * @brief The integral of the hat function from @f$-\infty@f$ to @p t.
+     */
+    inline double
+    hat_integral(const double t, const double h)
+    {
+      if (t <= -h)
+        return 0.;
+      if (t <= 0.)
+        return (t + h) * (t + h) / (2. * h);
+      if (t < h)
+        return h - (h - t) * (h - t) / (2. * h);
+      return h;
+    }
+
+    /**
+     * @brief GIMP weight: the hat function averaged over the domain
+     * @f$[d-l_p, d+l_p]@f$ clipped to @f$[lower, upper]@f$ (the grid, in
+     * coordinates relative to the node).
+     *
+     * Clipping the domain at the grid boundary keeps the partition of unity
+     * when a domain reaches past the outermost nodes. For an unclipped domain
+     * with @f$l_p \le h/2@f$ this is the three-piece formula of Bardenhagen
+     * and Kober (2004).
+     *
+     * @param d Point position minus node position.
+     * @param h Cell size in this direction.
+     * @param lp Half-length of the point's domain in this direction.
+     * @param lower Lower end of the grid, relative to the node.
+     * @param upper Upper end of the grid, relative to the node.
+     * @param[out] weight The weight @f$S_{vp}@f$.
+     * @param[out] derivative Its derivative with respect to @f$x_p@f$.
+     */
+    inline void
+    gimp(const double d,
+         const double h,
+         const double lp,
+         const double lower,
+         const double upper,
+         double &     weight,
+         double &     derivative)
+    {
+      const bool   clip_low  = (d - lp < lower);
+      const bool   clip_high = (d + lp > upper);
+      const double a         = clip_low ? lower : d - lp;
+      const double b         = clip_high ? upper : d + lp;
+      const double length    = b - a;
+      const double integral  = hat_integral(b, h) - hat_integral(a, h);
+      weight                 = integral / length;
+      const double da        = clip_low ? 0. : 1.;
+      const double db        = clip_high ? 0. : 1.;
+      derivative = ((hat(b, h) * db - hat(a, h) * da) * length -
+                    integral * (db - da)) /
+                   (length * length);
+    }
+
+    /**
+     * @brief Standard MPM weight: the hat function and its derivative,
+     * where the derivative is taken from the cell whose lower node is
+     * @p d_lower_node away: @f$-1/h@f$ for that cell's lower node and
+     * @f$+1/h@f$ for its upper node.
+     *
+     * @param d Point position minus node position.
+     * @param h Cell size.
+     * @param node_is_upper Whether the node is the upper node of the point's
+     *   cell in this direction.
+     * @param[out] weight The weight.
+     * @param[out] derivative Its derivative with respect to @f$x_p@f$.
+     */
+    inline void
+    standard(const double d,
+             const double h,
+             const bool   node_is_upper,
+             double &     weight,
+             double &     derivative)
+    {
+      weight     = hat(d, h);
+      derivative = node_is_upper ? 1. / h : -1. / h;
+    }
+  } // namespace Basis1D
+
+  /**
+   * @brief Geometry of the Cartesian background grid: origin, cell size and
+   * cell counts, and the map between nodes and their integer coordinates.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  struct CartesianGrid
+  {
+    /** Lower corner of the grid. */
+    Point<dim> lower;
+    /** Upper corner of the grid. */
+    Point<dim> upper;
+    /** Number of cells in each direction. */
+    std::array<unsigned int, dim> n_cells;
+    /** Cell size in each direction. */
+    Tensor<1, dim> cell_size;
+
+    /**
+     * @brief Set up from corners and cell counts.
+     */
+    void
+    initialize(const Point<dim> &                   lower_corner,
+               const Point<dim> &                   upper_corner,
+               const std::array<unsigned int, dim> &cells)
+    {
+      lower   = lower_corner;
+      upper   = upper_corner;
+      n_cells = cells;
+      for (unsigned int d = 0; d < dim; ++d)
+        cell_size[d] = (upper[d] - lower[d]) / n_cells[d];
+    }
+
+    /**
+     * @brief Number of nodes in direction @p d.
+     */
+    unsigned int
+    n_nodes(const unsigned int d) const
+    {
+      return n_cells[d] + 1;
+    }
+
+    /**
+     * @brief Linear index of the node with integer coordinates @p ijk.
+     */
+    std::uint64_t
+    node_index(const std::array<unsigned int, dim> &ijk) const
+    {
+      std::uint64_t index = 0;
+      for (int d = dim - 1; d >= 0; --d)
+        index = index * n_nodes(d) + ijk[d];
+      return index;
+    }
+
+    /**
+     * @brief Integer coordinates of the node at (or nearest to) @p x.
+     */
+    std::array<unsigned int, dim>
+    nearest_node(const Point<dim> &x) const
+    {
+      std::array<unsigned int, dim> ijk;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const long i = std::lround((x[d] - lower[d]) / cell_size[d]);
+          ijk[d] = static_cast<unsigned int>(
+            std::max(0L, std::min<long>(i, n_cells[d])));
+        }
+      return ijk;
+    }
+
+    /**
+     * @brief Position of node @p i in direction @p d.
+     */
+    double
+    node_coordinate(const unsigned int d, const long i) const
+    {
+      return lower[d] + i * cell_size[d];
+    }
+
+    /**
+     * @brief Whether @p x lies inside the grid (boundary included).
+     */
+    bool
+    contains(const Point<dim> &x) const
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        if (!(x[d] >= lower[d] && x[d] <= upper[d]))
+          return false;
+      return true;
+    }
+  };
+
+  /**
+   * @brief The nodes a material point couples to, with weights and gradients.
+   *
+   * Filled once per load step by BasisEvaluator::evaluate() and kept fixed
+   * through that step's Newton iterations.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  struct PointSupport
+  {
+    /** Largest number of nodes one point can couple to (3 per direction). */
+    static constexpr unsigned int max_nodes = dim == 1 ? 3 : (dim == 2 ? 9 : 27);
+
+    /** Number of nodes in use. */
+    unsigned int n_nodes = 0;
+    /** Linear node indices (CartesianGrid::node_index). */
+    std::array<std::uint64_t, max_nodes> nodes;
+    /** Weights @f$S_{vp}@f$. */
+    std::array<double, max_nodes> weights;
+    /** Gradients @f$\partial S_{vp}/\partial \tilde x@f$. */
+    std::array<Tensor<1, dim>, max_nodes> gradients;
+  };
+
+  /**
+   * @brief Evaluates standard-MPM or GIMP weights and gradients of a point.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class BasisEvaluator
+  {
+  public:
+    /**
+     * @brief Constructor.
+     * @param grid The background grid.
+     * @param type Standard MPM or GIMP.
+     */
+    BasisEvaluator(const CartesianGrid<dim> &grid, const BasisType type)
+      : grid(grid)
+      , type(type)
+    {}
+
+    /**
+     * @brief Weights and gradients of all nodes with a non-zero weight.
+     *
+     * @param position The point's start-of-step position.
+     * @param half_length The point's GIMP domain half-lengths (ignored by
+     *   standard MPM). Each must not exceed the cell size, so that a point
+     *   never couples to more than three nodes per direction.
+     * @param[out] support The nodes, weights and gradients.
+     */
+    void
+    evaluate(const Point<dim> &    position,
+             const Tensor<1, dim> &half_length,
+             PointSupport<dim> &   support) const
+    {
+      // One-dimensional weights of up to three nodes per direction.
+      std::array<std::array<double, 3>, dim>       w;
+      std::array<std::array<double, 3>, dim>       dw;
+      std::array<std::array<unsigned int, 3>, dim> index;
+      std::array<unsigned int, dim>                count;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double h = grid.cell_size[d];
+          const double x = position[d];
+          count[d]       = 0;
+          if (type == BasisType::standard_mpm)
+            {
+              long cell =
+                static_cast<long>(std::floor((x - grid.lower[d]) / h));
+              cell = std::max(0L, std::min<long>(cell, grid.n_cells[d] - 1));
+              for (unsigned int k = 0; k < 2; ++k)
+                {
+                  const double dist = x - grid.node_coordinate(d, cell + k);
+                  Basis1D::standard(
+                    dist, h, k == 1, w[d][count[d]], dw[d][count[d]]);
+                  index[d][count[d]] = cell + k;
+                  ++count[d];
+                }
+            }
+          else
+            {
+              const double lp = half_length[d];
+              Assert(lp > 0 && lp <= h,
+                     ExcMessage("GIMP domain half-length out of range"));
+              const double a  = std::max(x - lp, grid.lower[d]);
+              const double b  = std::min(x + lp, grid.upper[d]);
+              const long first = std::max<long>(
+                0, static_cast<long>(std::floor((a - grid.lower[d]) / h)));
+              const long last = std::min<long>(
+                grid.n_cells[d],
+                static_cast<long>(std::ceil((b - grid.lower[d]) / h)));
+              for (long i = first; i <= last; ++i)
+                {
+                  const double node = grid.node_coordinate(d, i);
+                  double       weight, derivative;
+                  Basis1D::gimp(x - node,
+                                h,
+                                lp,
+                                grid.lower[d] - node,
+                                grid.upper[d] - node,
+                                weight,
+                                derivative);
+                  if (weight == 0. && derivative == 0.)
+                    continue;
+                  AssertThrow(count[d] < 3,
+                              ExcMessage("A GIMP domain couples to more than "
+                                         "three nodes in one direction."));
+                  w[d][count[d]]     = weight;
+                  dw[d][count[d]]    = derivative;
+                  index[d][count[d]] = i;
+                  ++count[d];
+                }
+            }
+        }
+
+      // Tensor product.
+      support.n_nodes = 0;
+      std::array<unsigned int, dim> k{};
+      while (true)
+        {
+          std::array<unsigned int, dim> ijk;
+          double                        weight = 1.;
+          Tensor<1, dim>                gradient;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              ijk[d] = index[d][k[d]];
+              weight *= w[d][k[d]];
+            }
+          for (unsigned int g = 0; g < dim; ++g)
+            {
+              double value = 1.;
+              for (unsigned int d = 0; d < dim; ++d)
+                value *= (d == g) ? dw[d][k[d]] : w[d][k[d]];
+              gradient[g] = value;
+            }
+          const unsigned int n          = support.n_nodes++;
+          support.nodes[n]              = grid.node_index(ijk);
+          support.weights[n]            = weight;
+          support.gradients[n]          = gradient;
+
+          unsigned int d = 0;
+          for (; d < dim; ++d)
+            {
+              if (++k[d] < count[d])
+                break;
+              k[d] = 0;
+            }
+          if (d == dim)
+            break;
+        }
+    }
+
+  private:
+    const CartesianGrid<dim> &grid;
+    const BasisType           type;
+  };
+} // namespace impm
+
+#endif

@@ -1,0 +1,195 @@
+#ifndef impm_mechanics_material_h
+#define impm_mechanics_material_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief What a constitutive update returns: the new state and what its
+   * tangent needs.
+   *
+   * All tensors are 3x3: in plane strain the out-of-plane stretch is one but
+   * the out-of-plane stress is not zero.
+   */
+  struct ConstitutiveUpdate
+  {
+    /** Kirchhoff stress @f$\tau@f$ at the end of the step. */
+    SymmetricTensor<2, 3> kirchhoff_stress;
+    /** Elastic left Cauchy-Green tensor @f$b^e_{n+1}@f$. */
+    SymmetricTensor<2, 3> elastic_left_cauchy_green;
+    /** Plastic multiplier increment @f$\Delta\gamma@f$ (zero if elastic). */
+    double plastic_multiplier = 0.;
+
+    /** Eigenvalues of the trial @f$b^e_{tr}@f$. */
+    std::array<double, 3> trial_eigenvalues;
+    /** Eigenvectors of the trial @f$b^e_{tr}@f$, one per column. */
+    Tensor<2, 3> trial_eigenvectors;
+    /** Whether the return map was active (the step is plastic). */
+    bool plastic = false;
+    /** @f$\rho_y/\rho_{tr}@f$ when plastic. */
+    double return_ratio = 1.;
+    /** Unit deviatoric flow direction in the principal frame when plastic. */
+    std::array<double, 3> flow_direction = {{0., 0., 0.}};
+  };
+
+  /**
+   * @brief Interface of a constitutive model for finite strain with a
+   * multiplicative split and an exponential-map return.
+   *
+   * A model maps the increment of deformation gradient @f$\Delta F@f$ and the
+   * previous elastic left Cauchy-Green tensor to the Kirchhoff stress, and
+   * provides @f$\mathcal C@f$ with @f$d\tau = \mathcal C : G@f$ for a
+   * perturbation @f$d(\Delta F) = G\,\Delta F@f$.
+   */
+  class Material
+  {
+  public:
+    /** Destructor. */
+    virtual ~Material() = default;
+
+    /**
+     * @brief Stress update (elastic predictor, plastic corrector).
+     *
+     * @param deformation_increment @f$\Delta F@f$ (3x3).
+     * @param previous_elastic_strain @f$b^e_n@f$.
+     * @param[out] result The new stress and state.
+     */
+    virtual void
+    update(const Tensor<2, 3> &         deformation_increment,
+           const SymmetricTensor<2, 3> &previous_elastic_strain,
+           ConstitutiveUpdate &         result) const = 0;
+
+    /**
+     * @brief The tangent @f$\mathcal C_{imkl}@f$ of the last update, for
+     * indices below @p n_components (2 in plane strain, 3 in 3D).
+     */
+    virtual void
+    tangent(const ConstitutiveUpdate &result,
+            const unsigned int        n_components,
+            Tensor<4, 3> &            C) const = 0;
+
+    /**
+     * @brief Whether the model can become plastic: an elastic model has no
+     * plastic state to store or to write.
+     */
+    virtual bool
+    is_plastic() const = 0;
+
+    /**
+     * @brief A one-line description of the model and its parameters.
+     */
+    virtual std::string
+    description() const = 0;
+  };
+
+  /**
+   * @brief Hencky elasticity (Kirchhoff stress linear in logarithmic elastic
+   * strain) with optional von Mises perfect plasticity.
+   *
+   * The return map is the radial return in principal logarithmic strain
+   * space; its algorithmic tangent is exact (formulation note, section 2).
+   */
+  class HenckyVonMises : public Material
+  {
+  public:
+    /**
+     * @brief Constructor.
+     * @param youngs_modulus Young's modulus E > 0.
+     * @param poissons_ratio Poisson's ratio in (-1, 0.5).
+     * @param yield_stress @f$\rho_y = \sqrt{2 J_2}@f$ at yield; infinite for
+     *   an elastic model.
+     */
+    HenckyVonMises(const double youngs_modulus,
+                   const double poissons_ratio,
+                   const double yield_stress);
+
+    void
+    update(const Tensor<2, 3> &         deformation_increment,
+           const SymmetricTensor<2, 3> &previous_elastic_strain,
+           ConstitutiveUpdate &         result) const override;
+
+    void
+    tangent(const ConstitutiveUpdate &result,
+            const unsigned int        n_components,
+            Tensor<4, 3> &            C) const override;
+
+    bool
+    is_plastic() const override;
+
+    std::string
+    description() const override;
+
+    /** Lame's first parameter. */
+    double lambda;
+    /** Shear modulus. */
+    double mu;
+    /** Yield strength @f$\rho_y@f$. */
+    double yield_stress;
+    /** Young's modulus (for the description). */
+    double youngs_modulus;
+    /** Poisson's ratio (for the description). */
+    double poissons_ratio;
+  };
+
+  /**
+   * @brief The registry of material models, by name.
+   *
+   * Each model registers a name, a function that declares its parameters in
+   * the subsection of that name and a function that creates it from them.
+   * The names form the `Patterns::Selection` of the scene's `Model` entry,
+   * so a misspelt name is an error that lists the known ones.
+   */
+  namespace MaterialRegistry
+  {
+    /** @brief One registered model. */
+    struct Entry
+    {
+      /** Name used in scenes. */
+      std::string name;
+      /** Declares the model's parameters (inside its own subsection). */
+      std::function<void(ParameterHandler &)> declare_parameters;
+      /** Creates the model from the parsed parameters (same subsection). */
+      std::function<std::unique_ptr<Material>(ParameterHandler &)> create;
+    };
+
+    /**
+     * @brief Register a model; returns a dummy value so that it can
+     * initialise a static variable.
+     */
+    bool
+    register_material(const Entry &entry);
+
+    /** @brief All registered models. */
+    const std::vector<Entry> &
+    entries();
+
+    /** @brief Names joined by '|', for Patterns::Selection. */
+    std::string
+    names();
+
+    /**
+     * @brief Declare, in the current subsection, the `Model` entry and one
+     * subsection per registered model.
+     */
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * @brief Create the model named by `Model` in the current subsection.
+     */
+    std::unique_ptr<Material>
+    create(ParameterHandler &prm);
+  } // namespace MaterialRegistry
+} // namespace impm
+
+#endif

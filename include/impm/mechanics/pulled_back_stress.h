@@ -1,0 +1,117 @@
+#ifndef impm_mechanics_pulled_back_stress_h
+#define impm_mechanics_pulled_back_stress_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <impm/mechanics/material.h>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief The stress of the previously converged formulation and its
+   * consistent tangent (the paper's eq. 10; formulation note, section 3).
+   *
+   * @f$\tilde P_{ij} = \tau_{im}\,\Delta F^{-1}_{jm} / J_n@f$ and
+   * @f$A_{ijkq} = \partial \tilde P_{ij}/\partial \Delta F_{kq}
+   *   = \frac{1}{J_n}[\mathcal C_{imkl}\Delta F^{-1}_{ql}\Delta F^{-1}_{jm}
+   *   - \tau_{im}\Delta F^{-1}_{qm}\Delta F^{-1}_{jk}]@f$, all for indices
+   * below @p dim (in plane strain the out-of-plane terms do not couple).
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  struct PulledBackStress
+  {
+    /**
+     * @brief Embed a dim x dim deformation increment as 3x3 (plane strain:
+     * unit out-of-plane stretch).
+     */
+    static Tensor<2, 3>
+    embed(const Tensor<2, dim> &F)
+    {
+      Tensor<2, 3> full = unit_symmetric_tensor<3>();
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          full[i][j] = F[i][j];
+      return full;
+    }
+
+    /**
+     * @brief @f$\tilde P = \tau \Delta F^{-T}/J_n@f$.
+     *
+     * @param tau Kirchhoff stress.
+     * @param dF_inverse @f$\Delta F^{-1}@f$.
+     * @param previous_jacobian @f$J_n = \det F_n@f$.
+     */
+    static Tensor<2, dim>
+    stress(const SymmetricTensor<2, 3> &tau,
+           const Tensor<2, dim> &       dF_inverse,
+           const double                 previous_jacobian)
+    {
+      Tensor<2, dim> P;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          {
+            double value = 0.;
+            for (unsigned int m = 0; m < dim; ++m)
+              value += tau[i][m] * dF_inverse[j][m];
+            P[i][j] = value / previous_jacobian;
+          }
+      return P;
+    }
+
+    /**
+     * @brief The consistent tangent @f$A_{ijkq}@f$.
+     *
+     * @param C The material tangent @f$d\tau = \mathcal C : G@f$,
+     *   @f$G = d(\Delta F)\,\Delta F^{-1}@f$.
+     * @param tau Kirchhoff stress.
+     * @param dF_inverse @f$\Delta F^{-1}@f$.
+     * @param previous_jacobian @f$J_n@f$.
+     */
+    static Tensor<4, dim>
+    tangent(const Tensor<4, 3> &         C,
+            const SymmetricTensor<2, 3> &tau,
+            const Tensor<2, dim> &       dF_inverse,
+            const double                 previous_jacobian)
+    {
+      // C_imkl dFinv_ql first contracted over l, then over m with dFinv_jm.
+      Tensor<4, dim> Cq; // Cq[i][m][k][q] = C_imkl dFinv_ql
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int m = 0; m < dim; ++m)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int q = 0; q < dim; ++q)
+              {
+                double value = 0.;
+                for (unsigned int l = 0; l < dim; ++l)
+                  value += C[i][m][k][l] * dF_inverse[q][l];
+                Cq[i][m][k][q] = value;
+              }
+      // tau dFinv^T: T[i][q] = tau_im dFinv_qm
+      Tensor<2, dim> T;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int q = 0; q < dim; ++q)
+          for (unsigned int m = 0; m < dim; ++m)
+            T[i][q] += tau[i][m] * dF_inverse[q][m];
+
+      const double   scale = 1. / previous_jacobian;
+      Tensor<4, dim> A;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int q = 0; q < dim; ++q)
+              {
+                double value = -T[i][q] * dF_inverse[j][k];
+                for (unsigned int m = 0; m < dim; ++m)
+                  value += Cq[i][m][k][q] * dF_inverse[j][m];
+                A[i][j][k][q] = scale * value;
+              }
+      return A;
+    }
+  };
+} // namespace impm
+
+#endif

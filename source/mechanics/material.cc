@@ -1,0 +1,321 @@
+#include <impm/mechanics/material.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace impm
+{
+  namespace
+  {
+    /**
+     * (ln a - ln b)/(a - b), accurate also for a close to b, and 1/a for
+     * a == b: the divided difference of the logarithm.
+     */
+    double
+    log_divided_difference(const double a, const double b)
+    {
+      if (a == b)
+        return 1. / a;
+      return std::log1p((a - b) / b) / (a - b);
+    }
+  } // namespace
+
+
+
+  HenckyVonMises::HenckyVonMises(const double youngs_modulus,
+                                 const double poissons_ratio,
+                                 const double yield_stress)
+    : lambda(youngs_modulus * poissons_ratio /
+             ((1. + poissons_ratio) * (1. - 2. * poissons_ratio)))
+    , mu(youngs_modulus / (2. * (1. + poissons_ratio)))
+    , yield_stress(yield_stress)
+    , youngs_modulus(youngs_modulus)
+    , poissons_ratio(poissons_ratio)
+  {}
+
+
+
+  void
+  HenckyVonMises::update(const Tensor<2, 3> &         dF,
+                         const SymmetricTensor<2, 3> &be_n,
+                         ConstitutiveUpdate &         result) const
+  {
+    // Trial elastic left Cauchy-Green tensor be_tr = dF be_n dF^T.
+    const Tensor<2, 3>          be_n_full = be_n;
+    const SymmetricTensor<2, 3> be_trial =
+      symmetrize(dF * be_n_full * transpose(dF));
+    const auto eigen = eigenvectors(be_trial);
+
+    std::array<double, 3> strain;
+    double                trace = 0.;
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        result.trial_eigenvalues[a] = eigen[a].first;
+        for (unsigned int i = 0; i < 3; ++i)
+          result.trial_eigenvectors[i][a] = eigen[a].second[i];
+        AssertThrow(eigen[a].first > 0. && std::isfinite(eigen[a].first),
+                    ExcMessage("Non-positive or non-finite stretch in the "
+                               "trial elastic strain."));
+        strain[a] = 0.5 * std::log(eigen[a].first);
+        trace += strain[a];
+      }
+
+    // Deviatoric trial strain and the yield check on rho = |s| = sqrt(2 J2).
+    std::array<double, 3> deviator;
+    double                deviator_norm = 0.;
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        deviator[a] = strain[a] - trace / 3.;
+        deviator_norm += deviator[a] * deviator[a];
+      }
+    deviator_norm            = std::sqrt(deviator_norm);
+    const double rho_trial   = 2. * mu * deviator_norm;
+    result.plastic           = rho_trial > yield_stress;
+    result.plastic_multiplier = 0.;
+    result.return_ratio       = 1.;
+    if (result.plastic)
+      {
+        result.return_ratio       = yield_stress / rho_trial;
+        result.plastic_multiplier = (rho_trial - yield_stress) / (2. * mu);
+        for (unsigned int a = 0; a < 3; ++a)
+          {
+            result.flow_direction[a] = deviator[a] / deviator_norm;
+            strain[a] = trace / 3. + result.return_ratio * deviator[a];
+          }
+      }
+
+    // Kirchhoff stress and elastic strain, coaxial with be_tr.
+    result.kirchhoff_stress          = 0;
+    result.elastic_left_cauchy_green = 0;
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        const double tau_a = lambda * trace + 2. * mu * strain[a];
+        const double b_a   = std::exp(2. * strain[a]);
+        const Tensor<1, 3> &n = eigen[a].second;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = i; j < 3; ++j)
+            {
+              result.kirchhoff_stress[i][j] += tau_a * n[i] * n[j];
+              result.elastic_left_cauchy_green[i][j] += b_a * n[i] * n[j];
+            }
+      }
+  }
+
+
+
+  void
+  HenckyVonMises::tangent(const ConstitutiveUpdate &r,
+                          const unsigned int        n_components,
+                          Tensor<4, 3> &            C) const
+  {
+    const std::array<double, 3> &lam = r.trial_eigenvalues;
+    const Tensor<2, 3> &         Q   = r.trial_eigenvectors;
+
+    // theta_ab = d ln(lambda)/d lambda divided differences.
+    double theta[3][3];
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        theta[a][b] = log_divided_difference(lam[a], lam[b]);
+
+    const double bulk     = lambda + 2. * mu / 3.;
+    const double shear2   = 2. * mu * r.return_ratio;
+    const double lambda_e = r.plastic ? bulk - shear2 / 3. : lambda;
+
+    C = 0;
+    for (unsigned int k = 0; k < n_components; ++k)
+      for (unsigned int l = 0; l < n_components; ++l)
+        {
+          // G = e_k (x) e_l in the principal frame: G'_ab = Q_ka Q_lb.
+          // d eps'_ab = 1/2 theta_ab (lambda_b G'_ab + lambda_a G'_ba).
+          double deps[3][3];
+          double trace = 0.;
+          for (unsigned int a = 0; a < 3; ++a)
+            for (unsigned int b = 0; b < 3; ++b)
+              deps[a][b] = 0.5 * theta[a][b] *
+                           (lam[b] * Q[k][a] * Q[l][b] +
+                            lam[a] * Q[k][b] * Q[l][a]);
+          for (unsigned int a = 0; a < 3; ++a)
+            trace += deps[a][a];
+
+          // d tau' = D^alg : d eps'. Elastic: lambda tr I + 2 mu d eps.
+          // Plastic: K tr I + 2 mu ratio (dev d eps - n (n : d eps)).
+          double dtau[3][3];
+          double n_dot = 0.;
+          if (r.plastic)
+            for (unsigned int a = 0; a < 3; ++a)
+              n_dot += r.flow_direction[a] * deps[a][a];
+          for (unsigned int a = 0; a < 3; ++a)
+            for (unsigned int b = 0; b < 3; ++b)
+              dtau[a][b] = shear2 * deps[a][b];
+          for (unsigned int a = 0; a < 3; ++a)
+            {
+              dtau[a][a] += lambda_e * trace;
+              if (r.plastic)
+                dtau[a][a] -= shear2 * r.flow_direction[a] * n_dot;
+            }
+
+          // Back to the global frame: d tau = Q d tau' Q^T.
+          for (unsigned int i = 0; i < n_components; ++i)
+            for (unsigned int m = 0; m < n_components; ++m)
+              {
+                double value = 0.;
+                for (unsigned int a = 0; a < 3; ++a)
+                  for (unsigned int b = 0; b < 3; ++b)
+                    value += Q[i][a] * dtau[a][b] * Q[m][b];
+                C[i][m][k][l] = value;
+              }
+        }
+  }
+
+
+
+  bool
+  HenckyVonMises::is_plastic() const
+  {
+    return std::isfinite(yield_stress);
+  }
+
+
+
+  std::string
+  HenckyVonMises::description() const
+  {
+    std::ostringstream out;
+    out << (is_plastic() ? "von Mises" : "Hencky elastic")
+        << ": E = " << youngs_modulus << ", nu = " << poissons_ratio;
+    if (is_plastic())
+      out << ", yield stress = " << yield_stress;
+    return out.str();
+  }
+
+
+
+  namespace MaterialRegistry
+  {
+    namespace
+    {
+      std::vector<Entry> &
+      registry()
+      {
+        static std::vector<Entry> list;
+        return list;
+      }
+
+      void
+      declare_elastic_constants(ParameterHandler &prm)
+      {
+        prm.declare_entry("Young's modulus",
+                          "1e6",
+                          Patterns::Double(0., Patterns::Double::max_double_value),
+                          "Young's modulus E in Pa (> 0).");
+        prm.declare_entry("Poisson's ratio",
+                          "0",
+                          Patterns::Double(-0.999, 0.4999),
+                          "Poisson's ratio, in [-0.999, 0.4999].");
+      }
+
+      /** Parse and check E and nu, naming the parameter on bad input. */
+      std::pair<double, double>
+      parse_elastic_constants(ParameterHandler &prm)
+      {
+        const double E  = prm.get_double("Young's modulus");
+        const double nu = prm.get_double("Poisson's ratio");
+        AssertThrow(E > 0.,
+                    ExcMessage("Parameter 'Young's modulus' = " +
+                               std::to_string(E) +
+                               " is out of range: it must be > 0."));
+        return {E, nu};
+      }
+
+      const bool hencky_registered = register_material(
+        {"Hencky elastic",
+         [](ParameterHandler &prm) { declare_elastic_constants(prm); },
+         [](ParameterHandler &prm) -> std::unique_ptr<Material> {
+           const auto [E, nu] = parse_elastic_constants(prm);
+           return std::make_unique<HenckyVonMises>(
+             E, nu, std::numeric_limits<double>::infinity());
+         }});
+
+      const bool von_mises_registered = register_material(
+        {"von Mises",
+         [](ParameterHandler &prm) {
+           declare_elastic_constants(prm);
+           prm.declare_entry(
+             "Yield stress",
+             "2e4",
+             Patterns::Double(0., Patterns::Double::max_double_value),
+             "Yield strength rho_y = sqrt(2 J2) at yield, in Pa (> 0). "
+             "Perfect plasticity.");
+         },
+         [](ParameterHandler &prm) -> std::unique_ptr<Material> {
+           const auto [E, nu]        = parse_elastic_constants(prm);
+           const double yield_stress = prm.get_double("Yield stress");
+           AssertThrow(yield_stress > 0.,
+                       ExcMessage("Parameter 'Yield stress' = " +
+                                  std::to_string(yield_stress) +
+                                  " is out of range: it must be > 0."));
+           return std::make_unique<HenckyVonMises>(E, nu, yield_stress);
+         }});
+    } // namespace
+
+    bool
+    register_material(const Entry &entry)
+    {
+      registry().push_back(entry);
+      return true;
+    }
+
+    const std::vector<Entry> &
+    entries()
+    {
+      (void)hencky_registered;
+      (void)von_mises_registered;
+      return registry();
+    }
+
+    std::string
+    names()
+    {
+      std::string list;
+      for (const auto &entry : entries())
+        list += (list.empty() ? "" : "|") + entry.name;
+      return list;
+    }
+
+    void
+    declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Model",
+                        "von Mises",
+                        Patterns::Selection(names()),
+                        "The constitutive model. Known models: " + names() +
+                          ". Its parameters are in the subsection of the "
+                          "same name.");
+      for (const auto &entry : entries())
+        {
+          prm.enter_subsection(entry.name);
+          entry.declare_parameters(prm);
+          prm.leave_subsection();
+        }
+    }
+
+    std::unique_ptr<Material>
+    create(ParameterHandler &prm)
+    {
+      const std::string name = prm.get("Model");
+      for (const auto &entry : entries())
+        if (entry.name == name)
+          {
+            prm.enter_subsection(name);
+            auto material = entry.create(prm);
+            prm.leave_subsection();
+            return material;
+          }
+      AssertThrow(false,
+                  ExcMessage("Parameter 'Model' = '" + name +
+                             "' is not a known material; known: " + names()));
+      return nullptr;
+    }
+  } // namespace MaterialRegistry
+} // namespace impm
