@@ -71,7 +71,11 @@ namespace impm
       }
     deviator_norm            = std::sqrt(deviator_norm);
     const double rho_trial   = 2. * mu * deviator_norm;
-    result.plastic           = rho_trial > yield_stress;
+    // A point returned to the yield surface in the last step sits on it up
+    // to round-off; a relative margin keeps the choice of the elastic or the
+    // plastic branch (and so the Newton path) independent of round-off, and
+    // thus of the number of processes.
+    result.plastic            = rho_trial > yield_stress * (1. + 1e-10);
     result.plastic_multiplier = 0.;
     result.return_ratio       = 1.;
     if (result.plastic)

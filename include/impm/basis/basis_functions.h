@@ -79,13 +79,20 @@ namespace impm
      * with @f$l_p \le h/2@f$ this is the three-piece formula of Bardenhagen
      * and Kober (2004).
      *
+     * The gradient is the hat function's derivative averaged over the same
+     * (clipped) domain, @f$(N(b)-N(a))/(b-a)@f$. For an unclipped domain it
+     * equals the derivative of the weight with respect to @f$x_p@f$; for a
+     * clipped one it is not, and it is the one that reproduces the gradient
+     * of a linear field exactly (the derivative of the clipped weight would
+     * halve it).
+     *
      * @param d Point position minus node position.
      * @param h Cell size in this direction.
      * @param lp Half-length of the point's domain in this direction.
      * @param lower Lower end of the grid, relative to the node.
      * @param upper Upper end of the grid, relative to the node.
      * @param[out] weight The weight @f$S_{vp}@f$.
-     * @param[out] derivative Its derivative with respect to @f$x_p@f$.
+     * @param[out] derivative The domain-averaged gradient.
      */
     inline void
     gimp(const double d,
@@ -103,11 +110,7 @@ namespace impm
       const double length    = b - a;
       const double integral  = hat_integral(b, h) - hat_integral(a, h);
       weight                 = integral / length;
-      const double da        = clip_low ? 0. : 1.;
-      const double db        = clip_high ? 0. : 1.;
-      derivative = ((hat(b, h) * db - hat(a, h) * da) * length -
-                    integral * (db - da)) /
-                   (length * length);
+      derivative             = (hat(b, h) - hat(a, h)) / length;
     }
 
     /**

@@ -1,0 +1,166 @@
+#ifndef impm_core_mpm_solver_h
+#define impm_core_mpm_solver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <impm/basis/basis_functions.h>
+#include <impm/core/parameters.h>
+#include <impm/core/point_properties.h>
+#include <impm/io/point_output.h>
+#include <impm/mechanics/material.h>
+
+#include <fstream>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief The implicit material point solver in the previously converged
+   * Lagrangian form (the paper's eq. 9-10).
+   *
+   * Each load step evaluates the basis once on the start-of-step grid,
+   * numbers only the degrees of freedom that points touch, runs full Newton
+   * with the consistent tangent, and then convects the points and re-sorts
+   * them into cells and processes.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class MPMSolver
+  {
+  public:
+    /**
+     * @brief Set up the solver for a scene.
+     * @param parameters The scene.
+     * @param material The constitutive model.
+     * @param communicator The processes that share the work.
+     */
+    MPMSolver(const Parameters::All<dim> &parameters,
+              std::unique_ptr<Material>   material,
+              const MPI_Comm              communicator);
+
+    /**
+     * @brief Run all load steps, write output and the summary.
+     */
+    void
+    run();
+
+  private:
+    /** Per-point data of one load step, in particle iteration order. */
+    struct PointStep
+    {
+      /** Nodes, weights and gradients (fixed during the step). */
+      PointSupport<dim> support;
+      /** Local indices of the support's DoFs in the full vectors. */
+      std::array<unsigned int, PointSupport<dim>::max_nodes * dim> dofs;
+      /** Deformation gradient increment of the current iterate. */
+      Tensor<2, dim> deformation_increment;
+      /** Its inverse. */
+      Tensor<2, dim> deformation_increment_inverse;
+      /** Constitutive result of the current iterate. */
+      ConstitutiveUpdate update;
+    };
+
+    void
+    make_grid();
+    void
+    setup_dofs();
+    void
+    create_material_points();
+    void
+    evaluate_basis();
+    void
+    number_system_dofs();
+    void
+    update_stresses();
+    void
+    assemble_external_force(const double load_factor);
+    void
+    assemble_residual();
+    void
+    assemble_matrix();
+    void
+    solve_linear_system();
+    void
+    update_material_points(const unsigned int load_step);
+    double
+    column_error(const double load_factor) const;
+    void
+    write_points(const double load_factor, const unsigned int load_step);
+    void
+    write_summary(const double wall_time);
+    void
+    print_test_summary();
+
+    const Parameters::All<dim> &    parameters;
+    const std::unique_ptr<Material> material;
+    const MPI_Comm                  communicator;
+    ConditionalOStream              pcout;
+    TimerOutput                     timer;
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    const MappingQ1<dim>                      mapping;
+    const FESystem<dim>                       fe;
+    DoFHandler<dim>                           dof_handler;
+    AffineConstraints<double>                 constraints;
+    IndexSet                                  locally_owned_dofs;
+    IndexSet                                  locally_relevant_dofs;
+    CartesianGrid<dim>                        grid;
+    const BasisType                           basis_type;
+
+    /** Local indices (in the full vectors) of each grid node's DoFs. */
+    std::unordered_map<std::uint64_t, std::array<unsigned int, dim>>
+      node_dofs;
+
+    Particles::ParticleHandler<dim> material_points;
+    std::vector<PointStep>          point_steps;
+
+    /** Displacement increment of the step (full numbering, ghosted). */
+    LinearAlgebra::distributed::Vector<double> increment;
+    /** Internal and external nodal forces (full numbering). */
+    LinearAlgebra::distributed::Vector<double> internal_force;
+    LinearAlgebra::distributed::Vector<double> external_force;
+    /** Index in the linear system of each local DoF, or invalid. */
+    std::vector<types::global_dof_index> system_index;
+    IndexSet                             system_owned;
+    IndexSet                             system_relevant;
+    TrilinosWrappers::SparseMatrix       system_matrix;
+    TrilinosWrappers::MPI::Vector        system_rhs;
+    TrilinosWrappers::MPI::Vector        system_solution;
+
+    double residual_norm       = 0.;
+    double external_force_norm = 0.;
+
+    PointOutput<dim> point_output;
+    unsigned int     n_output_steps = 0;
+    std::ofstream    steps_file;
+    std::ofstream    newton_file;
+
+    unsigned int        total_newton_iterations = 0;
+    unsigned int        n_system_dofs_last      = 0;
+    double              last_error              = -1.;
+    std::vector<std::string> test_lines;
+  };
+} // namespace impm
+
+#endif

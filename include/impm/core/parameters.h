@@ -1,0 +1,216 @@
+#ifndef impm_core_parameters_h
+#define impm_core_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief The parameters of a scene, one struct per subsection of the
+   * `.prm` file, each with its `declare_parameters` and `parse_parameters`.
+   */
+  namespace Parameters
+  {
+    /**
+     * @brief Parse a comma-separated list of @p n numbers of entry @p entry
+     * in the current subsection; a wrong count is an error that names the
+     * entry, its value and the count expected.
+     */
+    std::vector<double>
+    get_vector(const ParameterHandler &prm,
+               const std::string &     entry,
+               const unsigned int      n);
+
+    /** @brief Scene name, dimension and where output goes. */
+    struct Scene
+    {
+      /** Name written into the summary. */
+      std::string name;
+      /** Space dimension (2: plane strain, or 3). */
+      unsigned int dimension;
+      /** Directory for all output files; created if missing. */
+      std::string output_directory;
+
+      /** @brief Declare the entries (top level). */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read the entries. */
+      void
+      parse_parameters(const ParameterHandler &prm);
+    };
+
+    /** @brief The Cartesian background grid and its boundary conditions. */
+    template <int dim>
+    struct Grid
+    {
+      /** Lower corner. */
+      Point<dim> lower_corner;
+      /** Upper corner. */
+      Point<dim> upper_corner;
+      /** Cells in each direction. */
+      std::array<unsigned int, dim> n_cells;
+      /**
+       * Condition on each face, in the order x-, x+, y-, y+ (, z-, z+):
+       * "none", "roller" (normal displacement zero) or "fixed".
+       */
+      std::array<std::string, 2 * dim> face_conditions;
+
+      /** @brief Declare the entries in subsection "Grid". */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read them. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** @brief A body: a box filled with material points. */
+    template <int dim>
+    struct Body
+    {
+      /** Lower corner of the box. */
+      Point<dim> lower_corner;
+      /** Upper corner of the box. */
+      Point<dim> upper_corner;
+      /** Points per cell and direction (n gives n^dim points per cell). */
+      unsigned int points_per_direction;
+      /** Initial density in kg/m^3. */
+      double density;
+
+      /** @brief Declare the entries in subsection "Body". */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read them. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** @brief How points and nodes are weighted. */
+    struct MaterialPoints
+    {
+      /** "GIMP" or "standard MPM". */
+      std::string basis;
+      /** Whether GIMP domains stretch with the deformation. */
+      bool update_domains;
+
+      /** @brief Declare the entries in subsection "Material points". */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read them. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** @brief The body force effect. */
+    template <int dim>
+    struct Gravity
+    {
+      /** Whether the scene applies gravity. */
+      bool enabled;
+      /** Acceleration in m/s^2, reached at the last load step. */
+      Tensor<1, dim> acceleration;
+
+      /** @brief Declare the entries in subsection "Gravity". */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read them. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** @brief Load stepping, Newton and the linear solver. */
+    struct Solver
+    {
+      /** Number of equal load steps. */
+      unsigned int n_load_steps;
+      /** Convergence when |r| / |f_ext| falls below this. */
+      double tolerance;
+      /** Newton iterations allowed per load step. */
+      unsigned int max_iterations;
+      /** "direct" (Amesos KLU) or "GMRES with AMG" (Trilinos ML). */
+      std::string linear_solver;
+      /** Relative tolerance of the iterative linear solver. */
+      double linear_tolerance;
+
+      /** @brief Declare the entries in subsection "Solver". */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read them. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** @brief What is written, and how often. */
+    struct Output
+    {
+      /** Write point files every this many load steps (0: never). */
+      unsigned int interval;
+      /** Compare with this analytical solution ("none", "column"). */
+      std::string analytical_solution;
+
+      /** @brief Declare the entries in subsection "Output". */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read them. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** @brief A deterministic summary for the test suite. */
+    struct Testing
+    {
+      /** Print the test summary instead of the progress and timing. */
+      bool enabled;
+      /** Number of points (by id) whose state is printed at the end. */
+      unsigned int n_printed_points;
+
+      /** @brief Declare the entries in subsection "Testing". */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read them. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** @brief Everything a scene says. */
+    template <int dim>
+    struct All
+    {
+      /** Scene. */
+      Scene scene;
+      /** Grid. */
+      Grid<dim> grid;
+      /** Body. */
+      Body<dim> body;
+      /** Material points. */
+      MaterialPoints material_points;
+      /** Gravity. */
+      Gravity<dim> gravity;
+      /** Solver. */
+      Solver solver;
+      /** Output. */
+      Output output;
+      /** Testing. */
+      Testing testing;
+
+      /** @brief Read all subsections. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /**
+     * @brief Declare every entry of a scene, for both dimensions (vector
+     * entries are lists whose length is checked against the dimension).
+     */
+    void
+    declare_all(ParameterHandler &prm);
+  } // namespace Parameters
+} // namespace impm
+
+#endif

@@ -1,0 +1,94 @@
+#ifndef impm_io_point_output_h
+#define impm_io_point_output_h
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief Writes material points with their fields as `.vtu` pieces, a
+   * `.pvtu` record per output step and a `.pvd` time series for ParaView.
+   *
+   * The caller adds the points of this process and the fields to write;
+   * only what is added is computed and written. Every file is written under
+   * a temporary name and renamed when complete, so a run that stops never
+   * leaves a half-written record behind.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class PointOutput : public DataOutInterface<0, dim>
+  {
+  public:
+    /**
+     * @brief Constructor.
+     * @param directory Output directory (must exist).
+     * @param base_name File names start with this.
+     * @param communicator The processes that write together.
+     */
+    PointOutput(const std::string &directory,
+                const std::string &base_name,
+                const MPI_Comm     communicator);
+
+    /**
+     * @brief Start a new output step with @p n_points points on this process
+     * and the given field layout.
+     *
+     * @param names One name per scalar component; vector fields repeat their
+     *   name for each component.
+     * @param is_vector Whether each component is part of a vector field.
+     */
+    void
+    begin(const unsigned int              n_points,
+          const std::vector<std::string> &names,
+          const std::vector<bool> &       is_vector);
+
+    /**
+     * @brief Set the position and field values of point @p index.
+     */
+    void
+    set_point(const unsigned int         index,
+              const Point<dim> &         position,
+              const std::vector<double> &values);
+
+    /**
+     * @brief Write this step's files and add them to the `.pvd` series.
+     * @param time The pseudo-time (load factor) of the step.
+     * @param step The output step number (used in the file names).
+     */
+    void
+    write(const double time, const unsigned int step);
+
+  private:
+    const std::vector<DataOutBase::Patch<0, dim>> &
+    get_patches() const override;
+
+    std::vector<std::string>
+    get_dataset_names() const override;
+
+    std::vector<
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>>
+    get_nonscalar_data_ranges() const override;
+
+    const std::string                        directory;
+    const std::string                        base_name;
+    const MPI_Comm                           communicator;
+    std::vector<DataOutBase::Patch<0, dim>>  patches;
+    std::vector<std::string>                 names;
+    std::vector<bool>                        is_vector;
+    std::vector<std::pair<double, std::string>> series;
+  };
+} // namespace impm
+
+#endif

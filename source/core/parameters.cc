@@ -1,0 +1,395 @@
+#include <deal.II/base/utilities.h>
+
+#include <impm/core/parameters.h>
+#include <impm/mechanics/material.h>
+
+#include <sstream>
+
+namespace impm
+{
+  namespace Parameters
+  {
+    namespace
+    {
+      /** Error for an entry whose value is out of its allowed range. */
+      [[noreturn]] void
+      bad_value(const std::string &entry,
+                const std::string &value,
+                const std::string &allowed)
+      {
+        AssertThrow(false,
+                    ExcMessage("Parameter '" + entry + "' = '" + value +
+                               "' is not allowed: " + allowed));
+        std::abort();
+      }
+    } // namespace
+
+
+
+    std::vector<double>
+    get_vector(const ParameterHandler &prm,
+               const std::string &     entry,
+               const unsigned int      n)
+    {
+      const std::string         value = prm.get(entry);
+      const std::vector<double> numbers =
+        Utilities::string_to_double(Utilities::split_string_list(value));
+      if (numbers.size() != n)
+        bad_value(entry,
+                  value,
+                  "it needs " + std::to_string(n) +
+                    " comma-separated numbers (one per dimension).");
+      return numbers;
+    }
+
+
+
+    void
+    Scene::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Scene name",
+                        "scene",
+                        Patterns::Anything(),
+                        "Name of the scene, written into summary.json.");
+      prm.declare_entry("Dimension",
+                        "2",
+                        Patterns::Integer(2, 3),
+                        "Space dimension: 2 (plane strain) or 3.");
+      prm.declare_entry("Output directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Directory for all output (created if missing), "
+                        "relative to the working directory.");
+    }
+
+    void
+    Scene::parse_parameters(const ParameterHandler &prm)
+    {
+      name             = prm.get("Scene name");
+      dimension        = prm.get_integer("Dimension");
+      output_directory = prm.get("Output directory");
+      if (output_directory.empty())
+        bad_value("Output directory", "", "it must not be empty.");
+    }
+
+
+
+    template <int dim>
+    void
+    Grid<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Grid");
+      prm.declare_entry("Lower corner",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Lower corner of the background grid, one "
+                        "coordinate per dimension, in m.");
+      prm.declare_entry("Upper corner",
+                        "3.125, 50",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Upper corner of the background grid, in m.");
+      prm.declare_entry("Number of cells",
+                        "1, 16",
+                        Patterns::List(Patterns::Integer(1), 2, 3),
+                        "Number of cells in each direction (>= 1).");
+      const char *faces[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+      for (const char *face : faces)
+        prm.declare_entry(std::string("Condition ") + face,
+                          "none",
+                          Patterns::Selection("none|roller|fixed"),
+                          std::string("Displacement condition on the grid "
+                                      "face ") +
+                            face +
+                            ": none, roller (normal component zero) or "
+                            "fixed (all components zero). z faces are "
+                            "used in 3D only.");
+      prm.leave_subsection();
+    }
+
+    template <int dim>
+    void
+    Grid<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Grid");
+      const auto lower = get_vector(prm, "Lower corner", dim);
+      const auto upper = get_vector(prm, "Upper corner", dim);
+      const auto cells = get_vector(prm, "Number of cells", dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower_corner[d] = lower[d];
+          upper_corner[d] = upper[d];
+          n_cells[d]      = static_cast<unsigned int>(cells[d]);
+          if (!(upper[d] > lower[d]))
+            bad_value("Grid/Upper corner",
+                      prm.get("Upper corner"),
+                      "each coordinate must exceed that of 'Lower corner' (" +
+                        prm.get("Lower corner") + ").");
+        }
+      const char *faces[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+      for (unsigned int f = 0; f < 2 * dim; ++f)
+        face_conditions[f] = prm.get(std::string("Condition ") + faces[f]);
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    Body<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Body");
+      prm.declare_entry("Lower corner",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Lower corner of the box filled with material, in m. "
+                        "Cells whose point positions fall inside are "
+                        "filled.");
+      prm.declare_entry("Upper corner",
+                        "3.125, 50",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Upper corner of the box filled with material, in m.");
+      prm.declare_entry("Points per cell direction",
+                        "2",
+                        Patterns::Integer(1, 10),
+                        "n: each filled cell holds n^dim regularly placed "
+                        "material points (1 to 10).");
+      prm.declare_entry("Density",
+                        "80",
+                        Patterns::Double(0.),
+                        "Initial density rho_0 in kg/m^3 (>= 0).");
+      prm.leave_subsection();
+    }
+
+    template <int dim>
+    void
+    Body<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Body");
+      const auto lower = get_vector(prm, "Lower corner", dim);
+      const auto upper = get_vector(prm, "Upper corner", dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower_corner[d] = lower[d];
+          upper_corner[d] = upper[d];
+          if (!(upper[d] > lower[d]))
+            bad_value("Body/Upper corner",
+                      prm.get("Upper corner"),
+                      "each coordinate must exceed that of 'Lower corner' (" +
+                        prm.get("Lower corner") + ").");
+        }
+      points_per_direction = prm.get_integer("Points per cell direction");
+      density              = prm.get_double("Density");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    MaterialPoints::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material points");
+      prm.declare_entry("Basis",
+                        "GIMP",
+                        Patterns::Selection("GIMP|standard MPM"),
+                        "Weighting between points and nodes: GIMP (the "
+                        "shape function averaged over the point's domain) "
+                        "or standard MPM (the shape function at the point).");
+      prm.declare_entry("Update domains",
+                        "true",
+                        Patterns::Bool(),
+                        "GIMP only: scale the domain half-lengths with the "
+                        "stretch U of F = RU (true) or keep them (false).");
+      prm.leave_subsection();
+    }
+
+    void
+    MaterialPoints::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material points");
+      basis          = prm.get("Basis");
+      update_domains = prm.get_bool("Update domains");
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    Gravity<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Gravity");
+      prm.declare_entry("Enabled",
+                        "true",
+                        Patterns::Bool(),
+                        "Whether the body force of the points' masses acts.");
+      prm.declare_entry("Acceleration",
+                        "0, -10",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Gravitational acceleration in m/s^2, one component "
+                        "per dimension; applied in equal load steps.");
+      prm.leave_subsection();
+    }
+
+    template <int dim>
+    void
+    Gravity<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Gravity");
+      enabled         = prm.get_bool("Enabled");
+      const auto g    = get_vector(prm, "Acceleration", dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        acceleration[d] = g[d];
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Solver::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      prm.declare_entry("Load steps",
+                        "50",
+                        Patterns::Integer(1),
+                        "Number of equal load steps (>= 1).");
+      prm.declare_entry("Tolerance",
+                        "1e-9",
+                        Patterns::Double(1e-15, 1.),
+                        "Newton converges when |r| / |f_ext| on the free "
+                        "degrees of freedom falls below this (1e-15 to 1).");
+      prm.declare_entry("Maximum iterations",
+                        "20",
+                        Patterns::Integer(1, 1000),
+                        "Newton iterations allowed per load step; a step "
+                        "that needs more stops the run with an error.");
+      prm.declare_entry("Linear solver",
+                        "direct",
+                        Patterns::Selection("direct|GMRES with AMG"),
+                        "direct (Trilinos Amesos KLU) or GMRES with AMG "
+                        "(Trilinos ML) preconditioning.");
+      prm.declare_entry("Linear tolerance",
+                        "1e-12",
+                        Patterns::Double(1e-16, 1e-2),
+                        "Relative residual of the iterative linear solver.");
+      prm.leave_subsection();
+    }
+
+    void
+    Solver::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      n_load_steps     = prm.get_integer("Load steps");
+      tolerance        = prm.get_double("Tolerance");
+      max_iterations   = prm.get_integer("Maximum iterations");
+      linear_solver    = prm.get("Linear solver");
+      linear_tolerance = prm.get_double("Linear tolerance");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Output::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Interval",
+                        "1",
+                        Patterns::Integer(0),
+                        "Write the points (.pvtu, and the .pvd series) every "
+                        "this many load steps; 0 writes none. The initial "
+                        "and the last state are always written if > 0.");
+      prm.declare_entry("Analytical solution",
+                        "none",
+                        Patterns::Selection("none|column"),
+                        "Compare with an analytical solution: column is the "
+                        "vertical stress of a column under its own weight, "
+                        "sigma_yy = -rho_0 g (l0 - Y) (the paper's eq. 12), "
+                        "whose error (eq. 13) goes to steps.csv and "
+                        "summary.json.");
+      prm.leave_subsection();
+    }
+
+    void
+    Output::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      interval            = prm.get_integer("Interval");
+      analytical_solution = prm.get("Analytical solution");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Testing::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Testing");
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Print a deterministic summary for the test suite "
+                        "(same on any number of processes) instead of "
+                        "progress and timing.");
+      prm.declare_entry("Printed points",
+                        "3",
+                        Patterns::Integer(0),
+                        "Number of points, lowest ids first, whose final "
+                        "state the test summary prints.");
+      prm.leave_subsection();
+    }
+
+    void
+    Testing::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Testing");
+      enabled          = prm.get_bool("Enabled");
+      n_printed_points = prm.get_integer("Printed points");
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    All<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      scene.parse_parameters(prm);
+      grid.parse_parameters(prm);
+      body.parse_parameters(prm);
+      material_points.parse_parameters(prm);
+      gravity.parse_parameters(prm);
+      solver.parse_parameters(prm);
+      output.parse_parameters(prm);
+      testing.parse_parameters(prm);
+    }
+
+
+
+    void
+    declare_all(ParameterHandler &prm)
+    {
+      Scene::declare_parameters(prm);
+      Grid<2>::declare_parameters(prm);
+      Body<2>::declare_parameters(prm);
+      prm.enter_subsection("Material");
+      MaterialRegistry::declare_parameters(prm);
+      prm.leave_subsection();
+      MaterialPoints::declare_parameters(prm);
+      Gravity<2>::declare_parameters(prm);
+      Solver::declare_parameters(prm);
+      Output::declare_parameters(prm);
+      Testing::declare_parameters(prm);
+    }
+
+
+
+    template struct Grid<2>;
+    template struct Grid<3>;
+    template struct Body<2>;
+    template struct Body<3>;
+    template struct Gravity<2>;
+    template struct Gravity<3>;
+    template struct All<2>;
+    template struct All<3>;
+  } // namespace Parameters
+} // namespace impm

@@ -1,0 +1,152 @@
+#include <deal.II/base/utilities.h>
+
+#include <impm/io/point_output.h>
+
+#include <cstdio>
+#include <fstream>
+
+namespace impm
+{
+  template <int dim>
+  PointOutput<dim>::PointOutput(const std::string &directory,
+                                const std::string &base_name,
+                                const MPI_Comm     communicator)
+    : directory(directory)
+    , base_name(base_name)
+    , communicator(communicator)
+  {}
+
+
+
+  template <int dim>
+  void
+  PointOutput<dim>::begin(const unsigned int              n_points,
+                          const std::vector<std::string> &field_names,
+                          const std::vector<bool> &       vector_flags)
+  {
+    names     = field_names;
+    is_vector = vector_flags;
+    patches.resize(n_points);
+    for (unsigned int i = 0; i < n_points; ++i)
+      {
+        patches[i].patch_index = i;
+        patches[i].data.reinit(names.size(), 1);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  PointOutput<dim>::set_point(const unsigned int         index,
+                              const Point<dim> &         position,
+                              const std::vector<double> &values)
+  {
+    AssertDimension(values.size(), names.size());
+    patches[index].vertices[0] = position;
+    for (unsigned int c = 0; c < values.size(); ++c)
+      patches[index].data(c, 0) = values[c];
+  }
+
+
+
+  template <int dim>
+  void
+  PointOutput<dim>::write(const double time, const unsigned int step)
+  {
+    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(communicator);
+    const std::string stem =
+      base_name + "_" + Utilities::int_to_string(step, 5);
+
+    // Each process writes its piece under a temporary name, then renames it.
+    const std::string piece =
+      stem + "." + Utilities::int_to_string(rank, 4) + ".vtu";
+    {
+      std::ofstream out(directory + "/" + piece + ".tmp");
+      AssertThrow(out, ExcMessage("Cannot write " + directory + "/" + piece));
+      this->write_vtu(out);
+    }
+    std::rename((directory + "/" + piece + ".tmp").c_str(),
+                (directory + "/" + piece).c_str());
+    // All pieces exist before the records that name them.
+    MPI_Barrier(communicator);
+
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(stem + "." + Utilities::int_to_string(r, 4) +
+                           ".vtu");
+        {
+          std::ofstream out(directory + "/" + stem + ".pvtu.tmp");
+          this->write_pvtu_record(out, pieces);
+        }
+        std::rename((directory + "/" + stem + ".pvtu.tmp").c_str(),
+                    (directory + "/" + stem + ".pvtu").c_str());
+
+        series.emplace_back(time, stem + ".pvtu");
+        {
+          std::ofstream out(directory + "/" + base_name + ".pvd.tmp");
+          DataOutBase::write_pvd_record(out, series);
+        }
+        std::rename((directory + "/" + base_name + ".pvd.tmp").c_str(),
+                    (directory + "/" + base_name + ".pvd").c_str());
+      }
+  }
+
+
+
+  template <int dim>
+  const std::vector<DataOutBase::Patch<0, dim>> &
+  PointOutput<dim>::get_patches() const
+  {
+    return patches;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  PointOutput<dim>::get_dataset_names() const
+  {
+    return names;
+  }
+
+
+
+  template <int dim>
+  std::vector<
+    std::tuple<unsigned int,
+               unsigned int,
+               std::string,
+               DataComponentInterpretation::DataComponentInterpretation>>
+  PointOutput<dim>::get_nonscalar_data_ranges() const
+  {
+    std::vector<
+      std::tuple<unsigned int,
+                 unsigned int,
+                 std::string,
+                 DataComponentInterpretation::DataComponentInterpretation>>
+      ranges;
+    for (unsigned int c = 0; c < names.size();)
+      if (is_vector[c])
+        {
+          ranges.emplace_back(
+            c,
+            c + dim - 1,
+            names[c],
+            DataComponentInterpretation::component_is_part_of_vector);
+          c += dim;
+        }
+      else
+        ++c;
+    return ranges;
+  }
+
+
+
+  template class PointOutput<2>;
+  template class PointOutput<3>;
+} // namespace impm
