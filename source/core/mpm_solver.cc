@@ -646,10 +646,11 @@ namespace impm
                 for (unsigned int a = 0; a < 3; ++a)
                   stretch += std::sqrt(eigen[a].first) * eigen[a].second[d] *
                              eigen[a].second[d];
+                // At most h/2: a domain then spans at most three nodes.
                 properties[P::domain_half_length + d] =
                   std::min(properties[P::initial_domain_half_length + d] *
                              stretch,
-                           grid.cell_size[d]);
+                           0.5 * grid.cell_size[d]);
               }
           }
 
@@ -859,6 +860,9 @@ namespace impm
 
     for (const auto &line : test_lines)
       std::cout << line << '\n';
+    std::cout << "observed Newton order near the solution >= 1.7 in every "
+                 "step: "
+              << (min_newton_order >= 1.7 ? "yes" : "NO") << '\n';
     std::cout << "material points: " << material_points.n_global_particles()
               << ", total Newton iterations: " << total_newton_iterations
               << '\n';
@@ -975,6 +979,13 @@ namespace impm
             solve_linear_system();
           }
         total_newton_iterations += iteration;
+        // Observed order of the last contraction above round-off, where the
+        // iterate is near the solution: about 2 for full Newton.
+        for (unsigned int k = 1; k + 1 < residuals.size(); ++k)
+          if (residuals[k] < 1e-2 && residuals[k + 1] > 1e-10)
+            min_newton_order = std::min(min_newton_order,
+                                        std::log(residuals[k + 1]) /
+                                          std::log(residuals[k]));
         update_material_points(load_step);
 
         if (column)

@@ -115,9 +115,8 @@ namespace impm
 
     /**
      * @brief Standard MPM weight: the hat function and its derivative,
-     * where the derivative is taken from the cell whose lower node is
-     * @p d_lower_node away: @f$-1/h@f$ for that cell's lower node and
-     * @f$+1/h@f$ for its upper node.
+     * where the derivative is that of the point's cell: @f$-1/h@f$ for the
+     * cell's lower node and @f$+1/h@f$ for its upper node.
      *
      * @param d Point position minus node position.
      * @param h Cell size.
@@ -278,8 +277,8 @@ namespace impm
      *
      * @param position The point's start-of-step position.
      * @param half_length The point's GIMP domain half-lengths (ignored by
-     *   standard MPM). Each must not exceed the cell size, so that a point
-     *   never couples to more than three nodes per direction.
+     *   standard MPM). Each must not exceed half the cell size, so that a
+     *   point never couples to more than three nodes per direction.
      * @param[out] support The nodes, weights and gradients.
      */
     void
@@ -314,7 +313,7 @@ namespace impm
           else
             {
               const double lp = half_length[d];
-              Assert(lp > 0 && lp <= h,
+              Assert(lp > 0 && lp <= 0.5 * h,
                      ExcMessage("GIMP domain half-length out of range"));
               const double a  = std::max(x - lp, grid.lower[d]);
               const double b  = std::min(x + lp, grid.upper[d]);

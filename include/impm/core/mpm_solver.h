@@ -26,6 +26,7 @@
 #include <impm/mechanics/material.h>
 
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -159,6 +160,7 @@ namespace impm
     unsigned int        total_newton_iterations = 0;
     unsigned int        n_system_dofs_last      = 0;
     double              last_error              = -1.;
+    double              min_newton_order = std::numeric_limits<double>::max();
     std::vector<std::string> test_lines;
   };
 } // namespace impm
