@@ -1,5 +1,6 @@
 // build/impm [scene.prm] [--set "Subsection/Entry=value"]... : run a scene.
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -41,8 +42,8 @@ namespace
     if (equals == std::string::npos)
       throw std::runtime_error("--set '" + assignment +
                                "': expected \"Subsection/Entry=value\".");
-    const std::string path  = assignment.substr(0, equals);
-    const std::string value = assignment.substr(equals + 1);
+    const std::string        path  = assignment.substr(0, equals);
+    const std::string        value = assignment.substr(equals + 1);
     std::vector<std::string> parts;
     std::string::size_type   start = 0, slash;
     while ((slash = path.find('/', start)) != std::string::npos)
@@ -71,6 +72,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // Errors are reported by their message; a user needs no stack trace.
+  dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
   const bool is_root =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   try
@@ -111,8 +114,7 @@ main(int argc, char **argv)
       if (print_parameters)
         {
           if (is_root)
-            prm.print_parameters(std::cout,
-                                 dealii::ParameterHandler::Text);
+            prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
           return 0;
         }
       if (scene_file.empty())

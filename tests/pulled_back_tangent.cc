@@ -12,7 +12,7 @@ using namespace impm;
 template <int dim>
 void
 check(const std::string &name,
-      const Material &   material,
+      const Material    &material,
       const double       scale_of_increment)
 {
   // A previous elastic strain be_n from a sheared, stretched F_n.
@@ -45,8 +45,8 @@ check(const std::string &name,
   P_of(dF, update);
   Tensor<4, 3> C;
   material.tangent(update, dim, C);
-  const Tensor<4, dim> A = PulledBackStress<dim>::tangent(
-    C, update.kirchhoff_stress, invert(dF), Jn);
+  const Tensor<4, dim> A =
+    PulledBackStress<dim>::tangent(C, update.kirchhoff_stress, invert(dF), Jn);
 
   double       max_error = 0., max_entry = 0.;
   const double h = 1e-6;
@@ -61,7 +61,8 @@ check(const std::string &name,
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             {
-              max_error = std::max(max_error, std::abs(fd[i][j] - A[i][j][k][q]));
+              max_error =
+                std::max(max_error, std::abs(fd[i][j] - A[i][j][k][q]));
               max_entry = std::max(max_entry, std::abs(A[i][j][k][q]));
             }
       }
@@ -75,7 +76,9 @@ check(const std::string &name,
 int
 main()
 {
-  const HenckyVonMises elastic(1e6, 0.3, std::numeric_limits<double>::infinity());
+  const HenckyVonMises elastic(1e6,
+                               0.3,
+                               std::numeric_limits<double>::infinity());
   const HenckyVonMises plastic(1e6, 0.3, 2e4);
   check<2>("Hencky elastic", elastic, 0.05);
   check<2>("von Mises", plastic, 0.05);

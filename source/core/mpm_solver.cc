@@ -53,7 +53,7 @@ namespace impm
 
     /** Write a 3x3 tensor row by row. */
     void
-    write_tensor(const Tensor<2, 3> &     t,
+    write_tensor(const Tensor<2, 3>      &t,
                  const ArrayView<double> &properties,
                  const unsigned int       first)
     {
@@ -76,7 +76,7 @@ namespace impm
     /** Write a symmetric 3x3 tensor as its six unrolled entries. */
     void
     write_symmetric(const SymmetricTensor<2, 3> &t,
-                    const ArrayView<double> &    properties,
+                    const ArrayView<double>     &properties,
                     const unsigned int           first)
     {
       for (unsigned int k = 0; k < 6; ++k)
@@ -149,8 +149,7 @@ namespace impm
   {
     dof_handler.distribute_dofs(fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler,
-                                            locally_relevant_dofs);
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
     constraints.clear();
     constraints.reinit(locally_relevant_dofs);
@@ -203,8 +202,8 @@ namespace impm
     using P = PointProperties<dim>;
     material_points.initialize(triangulation, mapping, P::n_properties);
 
-    const auto &       body = parameters.body;
-    const unsigned int n    = body.points_per_direction;
+    const auto        &body       = parameters.body;
+    const unsigned int n          = body.points_per_direction;
     unsigned int       n_per_cell = 1;
     for (unsigned int d = 0; d < dim; ++d)
       n_per_cell *= n;
@@ -217,7 +216,7 @@ namespace impm
     std::vector<double> properties(P::n_properties, 0.);
     for (unsigned int i = 0; i < 3; ++i)
       {
-        properties[P::deformation_gradient + 4 * i] = 1.;
+        properties[P::deformation_gradient + 4 * i]  = 1.;
         properties[P::elastic_left_cauchy_green + i] = 1.;
       }
     properties[P::initial_volume] = volume;
@@ -252,20 +251,21 @@ namespace impm
                 {
                   reference[d] = (rest % n + 0.5) / n;
                   rest /= n;
-                  position[d] = cell_lower[d] + reference[d] * grid.cell_size[d];
-                  inside      = inside && position[d] > body.lower_corner[d] &&
+                  position[d] =
+                    cell_lower[d] + reference[d] * grid.cell_size[d];
+                  inside = inside && position[d] > body.lower_corner[d] &&
                            position[d] < body.upper_corner[d];
                 }
               if (!inside)
                 continue;
               for (unsigned int d = 0; d < dim; ++d)
                 properties[P::initial_position + d] = position[d];
-              material_points.insert_particle(
-                position,
-                reference,
-                cell_index * n_per_cell + q,
-                cell,
-                ArrayView<const double>(properties));
+              material_points.insert_particle(position,
+                                              reference,
+                                              cell_index * n_per_cell + q,
+                                              cell,
+                                              ArrayView<const double>(
+                                                properties));
             }
         }
     material_points.update_cached_numbers();
@@ -281,14 +281,14 @@ namespace impm
   void
   MPMSolver<dim>::evaluate_basis()
   {
-    TimerOutput::Scope   scope(timer, "basis evaluation");
+    TimerOutput::Scope scope(timer, "basis evaluation");
     using P = PointProperties<dim>;
     const BasisEvaluator<dim> basis(grid, basis_type);
     point_steps.resize(material_points.n_locally_owned_particles());
     unsigned int p = 0;
     for (const auto &point : material_points)
       {
-        PointStep &                   step       = point_steps[p++];
+        PointStep                    &step       = point_steps[p++];
         const ArrayView<const double> properties = point.get_properties();
         Tensor<1, dim>                half_length;
         for (unsigned int d = 0; d < dim; ++d)
@@ -327,8 +327,8 @@ namespace impm
 
     // Owned DoFs in the system: touched and not constrained, numbered
     // contiguously per process.
-    const unsigned int n_owned = locally_owned_dofs.n_elements();
-    std::vector<bool>  in_system(n_owned);
+    const unsigned int      n_owned = locally_owned_dofs.n_elements();
+    std::vector<bool>       in_system(n_owned);
     types::global_dof_index n_local_system = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
       {
@@ -349,7 +349,7 @@ namespace impm
     const types::global_dof_index n_system =
       Utilities::MPI::sum(n_local_system, communicator);
 
-    marker = -1.;
+    marker                       = -1.;
     types::global_dof_index next = offset;
     for (unsigned int i = 0; i < n_owned; ++i)
       if (in_system[i])
@@ -359,10 +359,10 @@ namespace impm
       n_owned + increment.get_partitioner()->n_ghost_indices();
     system_index.resize(n_local);
     for (unsigned int i = 0; i < n_local; ++i)
-      system_index[i] = marker.local_element(i) >= 0. ?
-                          static_cast<types::global_dof_index>(
-                            marker.local_element(i)) :
-                          numbers::invalid_dof_index;
+      system_index[i] =
+        marker.local_element(i) >= 0. ?
+          static_cast<types::global_dof_index>(marker.local_element(i)) :
+          numbers::invalid_dof_index;
 
     system_owned.clear();
     system_owned.set_size(n_system);
@@ -408,13 +408,13 @@ namespace impm
   MPMSolver<dim>::update_stresses()
   {
     TimerOutput::Scope scope(timer, "stress update");
-    using P = PointProperties<dim>;
+    using P        = PointProperties<dim>;
     unsigned int p = 0;
     for (const auto &point : material_points)
       {
-        PointStep &       step = point_steps[p++];
-        const auto &      s    = step.support;
-        Tensor<2, dim>    dF   = unit_symmetric_tensor<dim>();
+        PointStep     &step = point_steps[p++];
+        const auto    &s    = step.support;
+        Tensor<2, dim> dF   = unit_symmetric_tensor<dim>();
         for (unsigned int v = 0; v < s.n_nodes; ++v)
           for (unsigned int i = 0; i < dim; ++i)
             {
@@ -490,8 +490,7 @@ namespace impm
           {
             const Tensor<1, dim> force = stress * step.support.gradients[v];
             for (unsigned int i = 0; i < dim; ++i)
-              internal_force.local_element(step.dofs[v * dim + i]) +=
-                force[i];
+              internal_force.local_element(step.dofs[v * dim + i]) += force[i];
           }
       }
     internal_force.compress(VectorOperation::add);
@@ -511,8 +510,8 @@ namespace impm
   MPMSolver<dim>::assemble_matrix()
   {
     TimerOutput::Scope scope(timer, "assembly");
-    using P       = PointProperties<dim>;
-    system_matrix = 0.;
+    using P                         = PointProperties<dim>;
+    system_matrix                   = 0.;
     constexpr unsigned int max_dofs = PointSupport<dim>::max_nodes * dim;
     std::array<types::global_dof_index, max_dofs> rows;
     std::array<unsigned int, max_dofs>            local;
@@ -522,7 +521,7 @@ namespace impm
     for (const auto &point : material_points)
       {
         const PointStep &step       = point_steps[p++];
-        const auto &     s          = step.support;
+        const auto      &s          = step.support;
         const auto       properties = point.get_properties();
         const double     Jn =
           determinant(read_tensor(properties, P::deformation_gradient));
@@ -552,7 +551,7 @@ namespace impm
             for (unsigned int b = 0; b < n; ++b)
               {
                 const unsigned int w = local[b] / dim, k = local[b] % dim;
-                values[b]            = B[k] * s.gradients[w];
+                values[b] = B[k] * s.gradients[w];
               }
             system_matrix.add(rows[a], n, rows.data(), values.data());
           }
@@ -570,10 +569,10 @@ namespace impm
     system_solution = 0.;
     if (parameters.solver.linear_solver == "direct")
       {
-        SolverControl control(1, 0);
+        SolverControl                                  control(1, 0);
         TrilinosWrappers::SolverDirect::AdditionalData data(false,
                                                             "Amesos_Klu");
-        TrilinosWrappers::SolverDirect solver(control, data);
+        TrilinosWrappers::SolverDirect                 solver(control, data);
         solver.solve(system_matrix, system_solution, system_rhs);
       }
     else
@@ -584,7 +583,7 @@ namespace impm
         amg_data.higher_order_elements = false;
         amg_data.smoother_sweeps       = 2;
         amg.initialize(system_matrix, amg_data);
-        SolverControl control(1000,
+        SolverControl                 control(1000,
                               parameters.solver.linear_tolerance *
                                 system_rhs.l2_norm());
         TrilinosWrappers::SolverGMRES solver(control);
@@ -604,16 +603,16 @@ namespace impm
   MPMSolver<dim>::update_material_points(const unsigned int load_step)
   {
     TimerOutput::Scope scope(timer, "point update");
-    using P = PointProperties<dim>;
-    const bool update_domains =
-      basis_type == BasisType::gimp && parameters.material_points.update_domains;
+    using P                   = PointProperties<dim>;
+    const bool update_domains = basis_type == BasisType::gimp &&
+                                parameters.material_points.update_domains;
 
     std::string  left_grid;
     unsigned int p = 0;
     for (auto &point : material_points)
       {
-        const PointStep &step       = point_steps[p++];
-        const auto &     s          = step.support;
+        const PointStep  &step       = point_steps[p++];
+        const auto       &s          = step.support;
         ArrayView<double> properties = point.get_properties();
 
         Point<dim> position = point.get_location();
@@ -692,12 +691,13 @@ namespace impm
   MPMSolver<dim>::column_error(const double load_factor) const
   {
     // The paper's eq. 13 with sigma_a = -lambda rho_0 g (l0 - Z).
-    using P                = PointProperties<dim>;
-    const auto & body      = parameters.body;
-    const double height    = body.upper_corner[dim - 1] - body.lower_corner[dim - 1];
-    const double weight    = body.density *
-                          std::abs(parameters.gravity.acceleration[dim - 1]);
-    double       local[2]  = {0., 0.};
+    using P           = PointProperties<dim>;
+    const auto  &body = parameters.body;
+    const double height =
+      body.upper_corner[dim - 1] - body.lower_corner[dim - 1];
+    const double weight =
+      body.density * std::abs(parameters.gravity.acceleration[dim - 1]);
+    double local[2] = {0., 0.};
     for (const auto &point : material_points)
       {
         const auto   properties = point.get_properties();
@@ -705,8 +705,8 @@ namespace impm
           determinant(read_tensor(properties, P::deformation_gradient));
         const double sigma =
           read_symmetric(properties, P::kirchhoff_stress)[dim - 1][dim - 1] / J;
-        const double Z =
-          properties[P::initial_position + dim - 1] - body.lower_corner[dim - 1];
+        const double Z = properties[P::initial_position + dim - 1] -
+                         body.lower_corner[dim - 1];
         const double exact = -load_factor * weight * (height - Z);
         local[0] += std::abs(sigma - exact) * properties[P::initial_volume];
         local[1] += properties[P::initial_volume];
@@ -726,7 +726,7 @@ namespace impm
                                const unsigned int load_step)
   {
     TimerOutput::Scope scope(timer, "output");
-    using P = PointProperties<dim>;
+    using P                   = PointProperties<dim>;
     static const char *axis[] = {"x", "y", "z"};
 
     std::vector<std::string> names;
@@ -760,18 +760,18 @@ namespace impm
           read_symmetric(properties, P::kirchhoff_stress) / J;
         unsigned int c = 0;
         for (unsigned int d = 0; d < dim; ++d)
-          values[c++] = point.get_location()[d] -
-                        properties[P::initial_position + d];
+          values[c++] =
+            point.get_location()[d] - properties[P::initial_position + d];
         for (unsigned int d = 0; d < dim; ++d)
           values[c++] = properties[P::initial_position + d];
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = i; j < 3; ++j)
             values[c++] = sigma[i][j];
         const SymmetricTensor<2, 3> s = deviator(sigma);
-        values[c++] = std::sqrt(1.5 * (s * s));
-        values[c++] = properties[P::plastic_multiplier];
-        values[c++] = J * properties[P::initial_volume];
-        values[c++] = rank;
+        values[c++]                   = std::sqrt(1.5 * (s * s));
+        values[c++]                   = properties[P::plastic_multiplier];
+        values[c++]                   = J * properties[P::initial_volume];
+        values[c++]                   = rank;
         point_output.set_point(p++, point.get_location(), values);
       }
     point_output.write(load_factor, load_step);
@@ -792,8 +792,8 @@ namespace impm
     json << "{\n"
          << "  \"scene\": \"" << parameters.scene.name << "\",\n"
          << "  \"dimension\": " << dim << ",\n"
-         << "  \"processes\": "
-         << Utilities::MPI::n_mpi_processes(communicator) << ",\n"
+         << "  \"processes\": " << Utilities::MPI::n_mpi_processes(communicator)
+         << ",\n"
          << "  \"material\": \"" << material->description() << "\",\n"
          << "  \"basis\": \"" << parameters.material_points.basis << "\",\n"
          << "  \"material_points\": " << material_points.n_global_particles()
@@ -904,13 +904,12 @@ namespace impm
 
     pcout << "Scene '" << parameters.scene.name << "' (" << dim << "D) on "
           << Utilities::MPI::n_mpi_processes(communicator) << " process(es)\n"
-          << "  grid: " << triangulation.n_global_active_cells()
-          << " cells, " << dof_handler.n_dofs() << " DoFs\n"
+          << "  grid: " << triangulation.n_global_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " DoFs\n"
           << "  material points: " << material_points.n_global_particles()
           << " (" << parameters.material_points.basis << ")\n"
           << "  material: " << material->description() << '\n'
-          << "  effects: "
-          << (parameters.gravity.enabled ? "gravity, " : "")
+          << "  effects: " << (parameters.gravity.enabled ? "gravity, " : "")
           << "grid-face constraints" << std::endl;
 
     const bool column = parameters.output.analytical_solution == "column";
@@ -935,7 +934,7 @@ namespace impm
       write_points(0., 0);
 
     std::map<std::string, double> previous_times;
-    const unsigned int n_steps = parameters.solver.n_load_steps;
+    const unsigned int            n_steps = parameters.solver.n_load_steps;
     for (unsigned int load_step = 1; load_step <= n_steps; ++load_step)
       {
         const double load_factor = static_cast<double>(load_step) / n_steps;
@@ -983,9 +982,9 @@ namespace impm
         // iterate is near the solution: about 2 for full Newton.
         for (unsigned int k = 1; k + 1 < residuals.size(); ++k)
           if (residuals[k] < 1e-2 && residuals[k + 1] > 1e-10)
-            min_newton_order = std::min(min_newton_order,
-                                        std::log(residuals[k + 1]) /
-                                          std::log(residuals[k]));
+            min_newton_order =
+              std::min(min_newton_order,
+                       std::log(residuals[k + 1]) / std::log(residuals[k]));
         update_material_points(load_step);
 
         if (column)
@@ -996,9 +995,9 @@ namespace impm
           write_points(load_factor, load_step);
 
         std::ostringstream line;
-        line << "step " << std::setw(3) << load_step << "  load "
-             << std::fixed << std::setprecision(4) << load_factor
-             << "  iterations " << iteration;
+        line << "step " << std::setw(3) << load_step << "  load " << std::fixed
+             << std::setprecision(4) << load_factor << "  iterations "
+             << iteration;
         if (column)
           {
             char buffer[32];
@@ -1019,8 +1018,7 @@ namespace impm
               steps_file << ',' << last_error;
             for (const auto &phase : phase_names)
               {
-                const double now =
-                  times.count(phase) ? times.at(phase) : 0.;
+                const double now = times.count(phase) ? times.at(phase) : 0.;
                 steps_file << ',' << now - previous_times[phase];
                 previous_times[phase] = now;
               }

@@ -4,6 +4,7 @@
 #include <impm/mechanics/material.h>
 
 #include <sstream>
+#include <stdexcept>
 
 namespace impm
 {
@@ -17,10 +18,8 @@ namespace impm
                 const std::string &value,
                 const std::string &allowed)
       {
-        AssertThrow(false,
-                    ExcMessage("Parameter '" + entry + "' = '" + value +
-                               "' is not allowed: " + allowed));
-        std::abort();
+        throw std::invalid_argument("Parameter '" + entry + "' = '" + value +
+                                    "' is not allowed: " + allowed);
       }
     } // namespace
 
@@ -28,14 +27,15 @@ namespace impm
 
     std::vector<double>
     get_vector(const ParameterHandler &prm,
-               const std::string &     entry,
+               const std::string      &section,
+               const std::string      &entry,
                const unsigned int      n)
     {
       const std::string         value = prm.get(entry);
       const std::vector<double> numbers =
         Utilities::string_to_double(Utilities::split_string_list(value));
       if (numbers.size() != n)
-        bad_value(entry,
+        bad_value(section + "/" + entry,
                   value,
                   "it needs " + std::to_string(n) +
                     " comma-separated numbers (one per dimension).");
@@ -111,9 +111,9 @@ namespace impm
     Grid<dim>::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Grid");
-      const auto lower = get_vector(prm, "Lower corner", dim);
-      const auto upper = get_vector(prm, "Upper corner", dim);
-      const auto cells = get_vector(prm, "Number of cells", dim);
+      const auto lower = get_vector(prm, "Grid", "Lower corner", dim);
+      const auto upper = get_vector(prm, "Grid", "Upper corner", dim);
+      const auto cells = get_vector(prm, "Grid", "Number of cells", dim);
       for (unsigned int d = 0; d < dim; ++d)
         {
           lower_corner[d] = lower[d];
@@ -165,8 +165,8 @@ namespace impm
     Body<dim>::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Body");
-      const auto lower = get_vector(prm, "Lower corner", dim);
-      const auto upper = get_vector(prm, "Upper corner", dim);
+      const auto lower = get_vector(prm, "Body", "Lower corner", dim);
+      const auto upper = get_vector(prm, "Body", "Upper corner", dim);
       for (unsigned int d = 0; d < dim; ++d)
         {
           lower_corner[d] = lower[d];
@@ -235,8 +235,8 @@ namespace impm
     Gravity<dim>::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Gravity");
-      enabled         = prm.get_bool("Enabled");
-      const auto g    = get_vector(prm, "Acceleration", dim);
+      enabled      = prm.get_bool("Enabled");
+      const auto g = get_vector(prm, "Gravity", "Acceleration", dim);
       for (unsigned int d = 0; d < dim; ++d)
         acceleration[d] = g[d];
       prm.leave_subsection();

@@ -22,7 +22,7 @@ namespace impm
   void
   PointOutput<dim>::begin(const unsigned int              n_points,
                           const std::vector<std::string> &field_names,
-                          const std::vector<bool> &       vector_flags)
+                          const std::vector<bool>        &vector_flags)
   {
     names     = field_names;
     is_vector = vector_flags;
@@ -39,7 +39,7 @@ namespace impm
   template <int dim>
   void
   PointOutput<dim>::set_point(const unsigned int         index,
-                              const Point<dim> &         position,
+                              const Point<dim>          &position,
                               const std::vector<double> &values)
   {
     AssertDimension(values.size(), names.size());
@@ -54,10 +54,9 @@ namespace impm
   void
   PointOutput<dim>::write(const double time, const unsigned int step)
   {
-    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
-    const unsigned int n_ranks =
-      Utilities::MPI::n_mpi_processes(communicator);
-    const std::string stem =
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const std::string  stem =
       base_name + "_" + Utilities::int_to_string(step, 5);
 
     // Each process writes its piece under a temporary name, then renames it.

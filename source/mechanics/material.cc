@@ -37,9 +37,9 @@ namespace impm
 
 
   void
-  HenckyVonMises::update(const Tensor<2, 3> &         dF,
+  HenckyVonMises::update(const Tensor<2, 3>          &dF,
                          const SymmetricTensor<2, 3> &be_n,
-                         ConstitutiveUpdate &         result) const
+                         ConstitutiveUpdate          &result) const
   {
     // Trial elastic left Cauchy-Green tensor be_tr = dF be_n dF^T.
     const Tensor<2, 3>          be_n_full = be_n;
@@ -69,8 +69,8 @@ namespace impm
         deviator[a] = strain[a] - trace / 3.;
         deviator_norm += deviator[a] * deviator[a];
       }
-    deviator_norm            = std::sqrt(deviator_norm);
-    const double rho_trial   = 2. * mu * deviator_norm;
+    deviator_norm          = std::sqrt(deviator_norm);
+    const double rho_trial = 2. * mu * deviator_norm;
     // A point returned to the yield surface in the last step sits on it up
     // to round-off; a relative margin keeps the choice of the elastic or the
     // plastic branch (and so the Newton path) independent of round-off, and
@@ -94,9 +94,9 @@ namespace impm
     result.elastic_left_cauchy_green = 0;
     for (unsigned int a = 0; a < 3; ++a)
       {
-        const double tau_a = lambda * trace + 2. * mu * strain[a];
-        const double b_a   = std::exp(2. * strain[a]);
-        const Tensor<1, 3> &n = eigen[a].second;
+        const double        tau_a = lambda * trace + 2. * mu * strain[a];
+        const double        b_a   = std::exp(2. * strain[a]);
+        const Tensor<1, 3> &n     = eigen[a].second;
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = i; j < 3; ++j)
             {
@@ -111,10 +111,10 @@ namespace impm
   void
   HenckyVonMises::tangent(const ConstitutiveUpdate &r,
                           const unsigned int        n_components,
-                          Tensor<4, 3> &            C) const
+                          Tensor<4, 3>             &C) const
   {
     const std::array<double, 3> &lam = r.trial_eigenvalues;
-    const Tensor<2, 3> &         Q   = r.trial_eigenvectors;
+    const Tensor<2, 3>          &Q   = r.trial_eigenvectors;
 
     // theta_ab = d ln(lambda)/d lambda divided differences.
     double theta[3][3];
@@ -136,9 +136,9 @@ namespace impm
           double trace = 0.;
           for (unsigned int a = 0; a < 3; ++a)
             for (unsigned int b = 0; b < 3; ++b)
-              deps[a][b] = 0.5 * theta[a][b] *
-                           (lam[b] * Q[k][a] * Q[l][b] +
-                            lam[a] * Q[k][b] * Q[l][a]);
+              deps[a][b] =
+                0.5 * theta[a][b] *
+                (lam[b] * Q[k][a] * Q[l][b] + lam[a] * Q[k][b] * Q[l][a]);
           for (unsigned int a = 0; a < 3; ++a)
             trace += deps[a][a];
 
@@ -211,7 +211,8 @@ namespace impm
       {
         prm.declare_entry("Young's modulus",
                           "1e6",
-                          Patterns::Double(0., Patterns::Double::max_double_value),
+                          Patterns::Double(0.,
+                                           Patterns::Double::max_double_value),
                           "Young's modulus E in Pa (> 0).");
         prm.declare_entry("Poisson's ratio",
                           "0",
@@ -226,9 +227,9 @@ namespace impm
         const double E  = prm.get_double("Young's modulus");
         const double nu = prm.get_double("Poisson's ratio");
         AssertThrow(E > 0.,
-                    ExcMessage("Parameter 'Young's modulus' = " +
-                               std::to_string(E) +
-                               " is out of range: it must be > 0."));
+                    ExcMessage(
+                      "Parameter 'Young's modulus' = " + std::to_string(E) +
+                      " is out of range: it must be > 0."));
         return {E, nu};
       }
 

@@ -100,8 +100,8 @@ namespace impm
          const double lp,
          const double lower,
          const double upper,
-         double &     weight,
-         double &     derivative)
+         double      &weight,
+         double      &derivative)
     {
       const bool   clip_low  = (d - lp < lower);
       const bool   clip_high = (d + lp > upper);
@@ -129,8 +129,8 @@ namespace impm
     standard(const double d,
              const double h,
              const bool   node_is_upper,
-             double &     weight,
-             double &     derivative)
+             double      &weight,
+             double      &derivative)
     {
       weight     = hat(d, h);
       derivative = node_is_upper ? 1. / h : -1. / h;
@@ -159,8 +159,8 @@ namespace impm
      * @brief Set up from corners and cell counts.
      */
     void
-    initialize(const Point<dim> &                   lower_corner,
-               const Point<dim> &                   upper_corner,
+    initialize(const Point<dim>                    &lower_corner,
+               const Point<dim>                    &upper_corner,
                const std::array<unsigned int, dim> &cells)
     {
       lower   = lower_corner;
@@ -201,7 +201,7 @@ namespace impm
       for (unsigned int d = 0; d < dim; ++d)
         {
           const long i = std::lround((x[d] - lower[d]) / cell_size[d]);
-          ijk[d] = static_cast<unsigned int>(
+          ijk[d]       = static_cast<unsigned int>(
             std::max(0L, std::min<long>(i, n_cells[d])));
         }
       return ijk;
@@ -241,7 +241,8 @@ namespace impm
   struct PointSupport
   {
     /** Largest number of nodes one point can couple to (3 per direction). */
-    static constexpr unsigned int max_nodes = dim == 1 ? 3 : (dim == 2 ? 9 : 27);
+    static constexpr unsigned int max_nodes =
+      dim == 1 ? 3 : (dim == 2 ? 9 : 27);
 
     /** Number of nodes in use. */
     unsigned int n_nodes = 0;
@@ -282,9 +283,9 @@ namespace impm
      * @param[out] support The nodes, weights and gradients.
      */
     void
-    evaluate(const Point<dim> &    position,
+    evaluate(const Point<dim>     &position,
              const Tensor<1, dim> &half_length,
-             PointSupport<dim> &   support) const
+             PointSupport<dim>    &support) const
     {
       // One-dimensional weights of up to three nodes per direction.
       std::array<std::array<double, 3>, dim>       w;
@@ -315,13 +316,13 @@ namespace impm
               const double lp = half_length[d];
               Assert(lp > 0 && lp <= 0.5 * h,
                      ExcMessage("GIMP domain half-length out of range"));
-              const double a  = std::max(x - lp, grid.lower[d]);
-              const double b  = std::min(x + lp, grid.upper[d]);
-              const long first = std::max<long>(
+              const double a     = std::max(x - lp, grid.lower[d]);
+              const double b     = std::min(x + lp, grid.upper[d]);
+              const long   first = std::max<long>(
                 0, static_cast<long>(std::floor((a - grid.lower[d]) / h)));
-              const long last = std::min<long>(
-                grid.n_cells[d],
-                static_cast<long>(std::ceil((b - grid.lower[d]) / h)));
+              const long last = std::min<long>(grid.n_cells[d],
+                                               static_cast<long>(std::ceil(
+                                                 (b - grid.lower[d]) / h)));
               for (long i = first; i <= last; ++i)
                 {
                   const double node = grid.node_coordinate(d, i);
@@ -366,10 +367,10 @@ namespace impm
                 value *= (d == g) ? dw[d][k[d]] : w[d][k[d]];
               gradient[g] = value;
             }
-          const unsigned int n          = support.n_nodes++;
-          support.nodes[n]              = grid.node_index(ijk);
-          support.weights[n]            = weight;
-          support.gradients[n]          = gradient;
+          const unsigned int n = support.n_nodes++;
+          support.nodes[n]     = grid.node_index(ijk);
+          support.weights[n]   = weight;
+          support.gradients[n] = gradient;
 
           unsigned int d = 0;
           for (; d < dim; ++d)

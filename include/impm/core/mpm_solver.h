@@ -113,7 +113,7 @@ namespace impm
     void
     print_test_summary();
 
-    const Parameters::All<dim> &    parameters;
+    const Parameters::All<dim>     &parameters;
     const std::unique_ptr<Material> material;
     const MPI_Comm                  communicator;
     ConditionalOStream              pcout;
@@ -130,8 +130,7 @@ namespace impm
     const BasisType                           basis_type;
 
     /** Local indices (in the full vectors) of each grid node's DoFs. */
-    std::unordered_map<std::uint64_t, std::array<unsigned int, dim>>
-      node_dofs;
+    std::unordered_map<std::uint64_t, std::array<unsigned int, dim>> node_dofs;
 
     Particles::ParticleHandler<dim> material_points;
     std::vector<PointStep>          point_steps;
@@ -157,10 +156,10 @@ namespace impm
     std::ofstream    steps_file;
     std::ofstream    newton_file;
 
-    unsigned int        total_newton_iterations = 0;
-    unsigned int        n_system_dofs_last      = 0;
-    double              last_error              = -1.;
-    double              min_newton_order = std::numeric_limits<double>::max();
+    unsigned int total_newton_iterations = 0;
+    unsigned int n_system_dofs_last      = 0;
+    double       last_error              = -1.;
+    double       min_newton_order        = std::numeric_limits<double>::max();
     std::vector<std::string> test_lines;
   };
 } // namespace impm

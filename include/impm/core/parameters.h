@@ -20,12 +20,14 @@ namespace impm
   {
     /**
      * @brief Parse a comma-separated list of @p n numbers of entry @p entry
-     * in the current subsection; a wrong count is an error that names the
-     * entry, its value and the count expected.
+     * in the current subsection (named @p section in messages); a wrong
+     * count is an error that names the entry, its value and the count
+     * expected.
      */
     std::vector<double>
     get_vector(const ParameterHandler &prm,
-               const std::string &     entry,
+               const std::string      &section,
+               const std::string      &entry,
                const unsigned int      n);
 
     /** @brief Scene name, dimension and where output goes. */

@@ -49,14 +49,14 @@ namespace impm
     void
     begin(const unsigned int              n_points,
           const std::vector<std::string> &names,
-          const std::vector<bool> &       is_vector);
+          const std::vector<bool>        &is_vector);
 
     /**
      * @brief Set the position and field values of point @p index.
      */
     void
     set_point(const unsigned int         index,
-              const Point<dim> &         position,
+              const Point<dim>          &position,
               const std::vector<double> &values);
 
     /**
@@ -81,12 +81,12 @@ namespace impm
                  DataComponentInterpretation::DataComponentInterpretation>>
     get_nonscalar_data_ranges() const override;
 
-    const std::string                        directory;
-    const std::string                        base_name;
-    const MPI_Comm                           communicator;
-    std::vector<DataOutBase::Patch<0, dim>>  patches;
-    std::vector<std::string>                 names;
-    std::vector<bool>                        is_vector;
+    const std::string                           directory;
+    const std::string                           base_name;
+    const MPI_Comm                              communicator;
+    std::vector<DataOutBase::Patch<0, dim>>     patches;
+    std::vector<std::string>                    names;
+    std::vector<bool>                           is_vector;
     std::vector<std::pair<double, std::string>> series;
   };
 } // namespace impm

@@ -65,9 +65,9 @@ namespace impm
      * @param[out] result The new stress and state.
      */
     virtual void
-    update(const Tensor<2, 3> &         deformation_increment,
+    update(const Tensor<2, 3>          &deformation_increment,
            const SymmetricTensor<2, 3> &previous_elastic_strain,
-           ConstitutiveUpdate &         result) const = 0;
+           ConstitutiveUpdate          &result) const = 0;
 
     /**
      * @brief The tangent @f$\mathcal C_{imkl}@f$ of the last update, for
@@ -76,7 +76,7 @@ namespace impm
     virtual void
     tangent(const ConstitutiveUpdate &result,
             const unsigned int        n_components,
-            Tensor<4, 3> &            C) const = 0;
+            Tensor<4, 3>             &C) const = 0;
 
     /**
      * @brief Whether the model can become plastic: an elastic model has no
@@ -114,14 +114,14 @@ namespace impm
                    const double yield_stress);
 
     void
-    update(const Tensor<2, 3> &         deformation_increment,
+    update(const Tensor<2, 3>          &deformation_increment,
            const SymmetricTensor<2, 3> &previous_elastic_strain,
-           ConstitutiveUpdate &         result) const override;
+           ConstitutiveUpdate          &result) const override;
 
     void
     tangent(const ConstitutiveUpdate &result,
             const unsigned int        n_components,
-            Tensor<4, 3> &            C) const override;
+            Tensor<4, 3>             &C) const override;
 
     bool
     is_plastic() const override;

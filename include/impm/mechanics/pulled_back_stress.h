@@ -48,7 +48,7 @@ namespace impm
      */
     static Tensor<2, dim>
     stress(const SymmetricTensor<2, 3> &tau,
-           const Tensor<2, dim> &       dF_inverse,
+           const Tensor<2, dim>        &dF_inverse,
            const double                 previous_jacobian)
     {
       Tensor<2, dim> P;
@@ -73,9 +73,9 @@ namespace impm
      * @param previous_jacobian @f$J_n@f$.
      */
     static Tensor<4, dim>
-    tangent(const Tensor<4, 3> &         C,
+    tangent(const Tensor<4, 3>          &C,
             const SymmetricTensor<2, 3> &tau,
-            const Tensor<2, dim> &       dF_inverse,
+            const Tensor<2, dim>        &dF_inverse,
             const double                 previous_jacobian)
     {
       // C_imkl dFinv_ql first contracted over l, then over m with dFinv_jm.
