@@ -1,12 +1,15 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
@@ -25,6 +28,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 namespace impm
 {
@@ -108,7 +112,7 @@ namespace impm
     , pcout(std::cout,
             Utilities::MPI::this_mpi_process(communicator) == 0 &&
               !parameters.testing.enabled)
-    , timer(communicator, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(communicator)
     , fe(FE_Q<dim>(1), dim)
     , dof_handler(triangulation)
@@ -173,6 +177,42 @@ namespace impm
     increment.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
     internal_force.reinit(increment);
     external_force.reinit(increment);
+
+    // Owned constrained DoFs carry reactions; a DoF on two constrained faces
+    // counts for the first of them.
+    reaction_dofs.clear();
+    reaction_columns.clear();
+    {
+      std::vector<bool> assigned(locally_owned_dofs.n_elements(), false);
+      for (unsigned int face = 0; face < 2 * dim; ++face)
+        {
+          const std::string &condition = parameters.grid.face_conditions[face];
+          if (condition == "none")
+            continue;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              if (condition == "roller" && c != face / 2)
+                continue;
+              std::vector<bool> mask(dim, false);
+              mask[c] = true;
+              const IndexSet dofs =
+                DoFTools::extract_boundary_dofs(dof_handler,
+                                                ComponentMask(mask),
+                                                {types::boundary_id(face)});
+              reaction_columns.push_back(face * dim + c);
+              for (const auto dof : dofs)
+                if (locally_owned_dofs.is_element(dof))
+                  {
+                    const unsigned int i =
+                      locally_owned_dofs.index_within_set(dof);
+                    if (!assigned[i])
+                      reaction_dofs.emplace_back(i, face * dim + c);
+                    assigned[i] = true;
+                  }
+            }
+        }
+      reactions.assign(2 * dim * dim, 0.);
+    }
 
     // Map each grid node to the local indices of its DoFs.
     node_dofs.clear();
@@ -269,6 +309,10 @@ namespace impm
             }
         }
     material_points.update_cached_numbers();
+    double mass = 0.;
+    for (const auto &point : material_points)
+      mass += point.get_properties()[P::mass];
+    initial_mass = Utilities::MPI::sum(mass, communicator);
     AssertThrow(material_points.n_global_particles() > 0,
                 ExcMessage("The body (subsection 'Body') contains no "
                            "material points: no point position of the grid's "
@@ -324,6 +368,14 @@ namespace impm
       for (unsigned int k = 0; k < step.support.n_nodes * dim; ++k)
         marker.local_element(step.dofs[k]) = 1.;
     marker.compress(VectorOperation::add);
+    marker.update_ghost_values();
+    const unsigned int n_local_elements =
+      locally_owned_dofs.n_elements() +
+      increment.get_partitioner()->n_ghost_indices();
+    std::vector<bool> touched(n_local_elements);
+    for (unsigned int i = 0; i < n_local_elements; ++i)
+      touched[i] = marker.local_element(i) > 0.;
+    marker.zero_out_ghost_values();
 
     // Owned DoFs in the system: touched and not constrained, numbered
     // contiguously per process.
@@ -332,9 +384,8 @@ namespace impm
     types::global_dof_index n_local_system = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        in_system[i] =
-          marker.local_element(i) > 0. &&
-          !constraints.is_constrained(locally_owned_dofs.nth_index_in_set(i));
+        in_system[i] = touched[i] && !constraints.is_constrained(
+                                       locally_owned_dofs.nth_index_in_set(i));
         n_local_system += in_system[i];
       }
     types::global_dof_index offset = 0;
@@ -378,9 +429,29 @@ namespace impm
     system_relevant.add_indices(rows.begin(), rows.end());
     system_relevant.compress();
 
-    // The sparsity pattern comes from the points' supports.
+    ghost_faces.clear();
+    if (parameters.stabilisation.enabled)
+      setup_ghost_penalty(touched);
+    for (const FacePenalty &face : ghost_faces)
+      for (const unsigned int dof : face.dofs)
+        if (system_index[dof] != numbers::invalid_dof_index)
+          system_relevant.add_index(system_index[dof]);
+    system_relevant.compress();
+
+    // The sparsity pattern comes from the points' supports and the
+    // stabilised faces.
     DynamicSparsityPattern               dsp(system_relevant);
     std::vector<types::global_dof_index> indices;
+    for (const FacePenalty &face : ghost_faces)
+      {
+        indices.clear();
+        for (const unsigned int dof : face.dofs)
+          if (system_index[dof] != numbers::invalid_dof_index)
+            indices.push_back(system_index[dof]);
+        std::sort(indices.begin(), indices.end());
+        for (const auto row : indices)
+          dsp.add_entries(row, indices.begin(), indices.end(), true);
+      }
     for (const PointStep &step : point_steps)
       {
         indices.clear();
@@ -405,11 +476,128 @@ namespace impm
 
   template <int dim>
   void
+  MPMSolver<dim>::setup_ghost_penalty(const std::vector<bool> &touched)
+  {
+    using P = PointProperties<dim>;
+
+    // Volume fraction of each cell filled by its points' current volumes,
+    // shared with the neighbours' ghost copies.
+    std::vector<double> fill(triangulation.n_active_cells(), 0.);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          double volume = 0.;
+          for (const auto &point : material_points.particles_in_cell(cell))
+            {
+              const auto properties = point.get_properties();
+              volume +=
+                determinant(read_tensor(properties, P::deformation_gradient)) *
+                properties[P::initial_volume];
+            }
+          fill[cell->active_cell_index()] = volume / cell->measure();
+        }
+    GridTools::exchange_cell_data_to_ghosts<double, DoFHandler<dim>>(
+      dof_handler,
+      [&](const typename DoFHandler<dim>::active_cell_iterator &cell) {
+        return fill[cell->active_cell_index()];
+      },
+      [&](const typename DoFHandler<dim>::active_cell_iterator &cell,
+          const double value) { fill[cell->active_cell_index()] = value; });
+
+    // A cell takes part when all its DoFs are in use.
+    const auto        &partitioner = *increment.get_partitioner();
+    const unsigned int n           = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs_here(n), dofs_there(n);
+    const auto in_use = [&](const std::vector<types::global_dof_index> &dofs) {
+      for (const auto dof : dofs)
+        if (!touched[partitioner.global_to_local(dof)])
+          return false;
+      return true;
+    };
+
+    const QGauss<dim - 1> quadrature(2);
+    const UpdateFlags     flags = update_gradients | update_normal_vectors |
+                              update_JxW_values | update_quadrature_points;
+    FEFaceValues<dim>   here(mapping, fe, quadrature, flags);
+    FEFaceValues<dim>   there(mapping, fe, quadrature, flags);
+    const double        modulus = material->elastic_modulus();
+    std::vector<double> normal_derivative(2 * n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        cell->get_dof_indices(dofs_here);
+        if (!in_use(dofs_here))
+          continue;
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (cell->at_boundary(f))
+              continue;
+            const auto neighbor = cell->neighbor(f);
+            // Each face once: by the lower cell id between owned cells, by
+            // the lower rank across processes.
+            if (neighbor->is_locally_owned() ?
+                  !(cell->id() < neighbor->id()) :
+                  cell->subdomain_id() > neighbor->subdomain_id())
+              continue;
+            if (std::min(fill[cell->active_cell_index()],
+                         fill[neighbor->active_cell_index()]) >=
+                parameters.stabilisation.fill_threshold)
+              continue;
+            neighbor->get_dof_indices(dofs_there);
+            if (!in_use(dofs_there))
+              continue;
+
+            here.reinit(cell, f);
+            there.reinit(neighbor, cell->neighbor_of_neighbor(f));
+            const double scale = parameters.stabilisation.penalty_scale *
+                                 modulus * cell->extent_in_direction(f / 2);
+            FacePenalty face;
+            face.matrix.reinit(2 * n, 2 * n);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                AssertThrow(here.quadrature_point(q).distance(
+                              there.quadrature_point(q)) <
+                              1e-10 * cell->diameter(),
+                            ExcInternalError());
+                const Tensor<1, dim> normal = here.normal_vector(q);
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    const unsigned int c =
+                      fe.system_to_component_index(i).first;
+                    normal_derivative[i] =
+                      here.shape_grad_component(i, q, c) * normal;
+                    normal_derivative[n + i] =
+                      -there.shape_grad_component(i, q, c) * normal;
+                  }
+                for (unsigned int i = 0; i < 2 * n; ++i)
+                  for (unsigned int j = 0; j < 2 * n; ++j)
+                    if (fe.system_to_component_index(i % n).first ==
+                        fe.system_to_component_index(j % n).first)
+                      face.matrix(i, j) += scale * normal_derivative[i] *
+                                           normal_derivative[j] * here.JxW(q);
+              }
+            face.dofs.resize(2 * n);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                face.dofs[i]     = partitioner.global_to_local(dofs_here[i]);
+                face.dofs[n + i] = partitioner.global_to_local(dofs_there[i]);
+              }
+            ghost_faces.push_back(std::move(face));
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  bool
   MPMSolver<dim>::update_stresses()
   {
     TimerOutput::Scope scope(timer, "stress update");
-    using P        = PointProperties<dim>;
-    unsigned int p = 0;
+    using P                 = PointProperties<dim>;
+    unsigned int p          = 0;
+    bool         admissible = true;
     for (const auto &point : material_points)
       {
         PointStep     &step = point_steps[p++];
@@ -422,7 +610,15 @@ namespace impm
               for (unsigned int j = 0; j < dim; ++j)
                 dF[i][j] += du * s.gradients[v][j];
             }
-        step.deformation_increment         = dF;
+        step.deformation_increment = dF;
+        // An inverted or non-finite increment fails the Newton solve (and
+        // lets the step control cut the step).
+        const double jacobian = determinant(dF);
+        if (!(jacobian > 0.) || !std::isfinite(jacobian))
+          {
+            admissible = false;
+            continue;
+          }
         step.deformation_increment_inverse = invert(dF);
         const auto properties              = point.get_properties();
         material->update(PulledBackStress<dim>::embed(dF),
@@ -430,6 +626,7 @@ namespace impm
                                         P::elastic_left_cauchy_green),
                          step.update);
       }
+    return Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1;
   }
 
 
@@ -492,6 +689,18 @@ namespace impm
             for (unsigned int i = 0; i < dim; ++i)
               internal_force.local_element(step.dofs[v * dim + i]) += force[i];
           }
+      }
+    // Ghost stabilisation acts on the displacement increment.
+    Vector<double> face_increment, face_force;
+    for (const FacePenalty &face : ghost_faces)
+      {
+        face_increment.reinit(face.dofs.size());
+        face_force.reinit(face.dofs.size());
+        for (unsigned int i = 0; i < face.dofs.size(); ++i)
+          face_increment[i] = increment.local_element(face.dofs[i]);
+        face.matrix.vmult(face_force, face_increment);
+        for (unsigned int i = 0; i < face.dofs.size(); ++i)
+          internal_force.local_element(face.dofs[i]) += face_force[i];
       }
     internal_force.compress(VectorOperation::add);
 
@@ -556,6 +765,15 @@ namespace impm
             system_matrix.add(rows[a], n, rows.data(), values.data());
           }
       }
+    for (const FacePenalty &face : ghost_faces)
+      for (unsigned int i = 0; i < face.dofs.size(); ++i)
+        if (system_index[face.dofs[i]] != numbers::invalid_dof_index)
+          for (unsigned int j = 0; j < face.dofs.size(); ++j)
+            if (system_index[face.dofs[j]] != numbers::invalid_dof_index &&
+                face.matrix(i, j) != 0.)
+              system_matrix.add(system_index[face.dofs[i]],
+                                system_index[face.dofs[j]],
+                                face.matrix(i, j));
     system_matrix.compress(VectorOperation::add);
   }
 
@@ -563,7 +781,7 @@ namespace impm
 
   template <int dim>
   void
-  MPMSolver<dim>::solve_linear_system()
+  MPMSolver<dim>::solve_linear_system(const bool estimate_condition)
   {
     TimerOutput::Scope scope(timer, "linear solve");
     system_solution = 0.;
@@ -573,7 +791,29 @@ namespace impm
         TrilinosWrappers::SolverDirect::AdditionalData data(false,
                                                             "Amesos_Klu");
         TrilinosWrappers::SolverDirect                 solver(control, data);
-        solver.solve(system_matrix, system_solution, system_rhs);
+        solver.initialize(system_matrix);
+        solver.solve(system_solution, system_rhs);
+        if (estimate_condition)
+          {
+            // |A|_F times a lower bound of |A^-1|_2 from inverse iteration
+            // with the factorisation already made.
+            TrilinosWrappers::MPI::Vector x(system_owned, communicator),
+              y(system_owned, communicator);
+            x                   = 1. / std::sqrt(double(x.size()));
+            double inverse_norm = 0.;
+            for (unsigned int k = 0; k < 3; ++k)
+              {
+                solver.solve(y, x);
+                inverse_norm = y.l2_norm();
+                x            = y;
+                x /= inverse_norm;
+              }
+            const double condition =
+              system_matrix.frobenius_norm() * inverse_norm;
+            worst_condition = std::isfinite(condition) ?
+                                std::max(worst_condition, condition) :
+                                std::numeric_limits<double>::infinity();
+          }
       }
     else
       {
@@ -594,6 +834,65 @@ namespace impm
       if (system_index[i] != numbers::invalid_dof_index)
         increment.local_element(i) += system_solution[system_index[i]];
     increment.update_ghost_values();
+  }
+
+
+
+  template <int dim>
+  double
+  MPMSolver<dim>::max_point_increment() const
+  {
+    double       largest = 0.;
+    unsigned int p       = 0;
+    for (auto point = material_points.begin(); point != material_points.end();
+         ++point, ++p)
+      {
+        const PointStep &step = point_steps[p];
+        Tensor<1, dim>   displacement;
+        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            displacement[i] += step.support.weights[v] *
+                               increment.local_element(step.dofs[v * dim + i]);
+        for (unsigned int d = 0; d < dim; ++d)
+          largest =
+            std::max(largest, std::abs(displacement[d]) / grid.cell_size[d]);
+      }
+    return Utilities::MPI::max(largest, communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  MPMSolver<dim>::compute_reactions()
+  {
+    // R = f_int - f_ext on the constrained DoFs: the support's force on the
+    // body, per face and component.
+    std::fill(reactions.begin(), reactions.end(), 0.);
+    for (const auto &[i, column] : reaction_dofs)
+      reactions[column] +=
+        internal_force.local_element(i) - external_force.local_element(i);
+    Utilities::MPI::sum(reactions, communicator, reactions);
+
+    // Global balance: the reactions carry the whole external load.
+    std::vector<double> total(dim, 0.);
+    for (const auto &[node, dofs] : node_dofs)
+      for (unsigned int c = 0; c < dim; ++c)
+        if (dofs[c] < locally_owned_dofs.n_elements())
+          total[c] += external_force.local_element(dofs[c]);
+    Utilities::MPI::sum(total, communicator, total);
+    double load = 0., imbalance = 0.;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        double sum = total[c];
+        for (unsigned int f = 0; f < 2 * dim; ++f)
+          sum += reactions[f * dim + c];
+        load += total[c] * total[c];
+        imbalance += sum * sum;
+      }
+    if (load > 0. && !reaction_columns.empty())
+      max_reaction_imbalance =
+        std::max(max_reaction_imbalance, std::sqrt(imbalance / load));
   }
 
 
@@ -674,7 +973,8 @@ namespace impm
 
     const auto messages = Utilities::MPI::all_gather(communicator, left_grid);
     for (const auto &message : messages)
-      AssertThrow(message.empty(), ExcMessage(message));
+      if (!message.empty())
+        throw std::runtime_error(message);
 
     const auto n_before = material_points.n_global_particles();
     material_points.sort_particles_into_subdomains_and_cells();
@@ -782,9 +1082,77 @@ namespace impm
 
   template <int dim>
   void
+  MPMSolver<dim>::measure_final_state()
+  {
+    using P           = PointProperties<dim>;
+    const auto  &body = parameters.body;
+    const double height =
+      body.upper_corner[dim - 1] - body.lower_corner[dim - 1];
+    const double weight =
+      body.density * std::abs(parameters.gravity.acceleration[dim - 1]);
+    double mass = 0., tension = -std::numeric_limits<double>::max(),
+           deviation = 0.;
+    Point<dim> initial_min, initial_max, final_min, final_max;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        initial_min[d] = final_min[d] = std::numeric_limits<double>::max();
+        initial_max[d] = final_max[d] = -std::numeric_limits<double>::max();
+      }
+    for (const auto &point : material_points)
+      {
+        const auto   properties = point.get_properties();
+        const double J =
+          determinant(read_tensor(properties, P::deformation_gradient));
+        const double vertical =
+          read_symmetric(properties, P::kirchhoff_stress)[dim - 1][dim - 1] / J;
+        mass += properties[P::mass];
+        tension = std::max(tension, vertical);
+        if (parameters.output.analytical_solution == "column")
+          {
+            const double Z = properties[P::initial_position + dim - 1] -
+                             body.lower_corner[dim - 1];
+            deviation = std::max(deviation,
+                                 std::abs(vertical + weight * (height - Z)) /
+                                   (weight * height));
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double X = properties[P::initial_position + d];
+            const double x = point.get_location()[d];
+            initial_min[d] = std::min(initial_min[d], X);
+            initial_max[d] = std::max(initial_max[d], X);
+            final_min[d]   = std::min(final_min[d], x);
+            final_max[d]   = std::max(final_max[d], x);
+          }
+      }
+    final_state.total_mass = Utilities::MPI::sum(mass, communicator);
+    final_state.max_tensile_vertical_stress =
+      Utilities::MPI::max(tension, communicator);
+    final_state.max_column_deviation =
+      Utilities::MPI::max(deviation, communicator);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        final_state.initial_min[d] =
+          Utilities::MPI::min(initial_min[d], communicator);
+        final_state.initial_max[d] =
+          Utilities::MPI::max(initial_max[d], communicator);
+        final_state.final_min[d] =
+          Utilities::MPI::min(final_min[d], communicator);
+        final_state.final_max[d] =
+          Utilities::MPI::max(final_max[d], communicator);
+      }
+  }
+
+
+
+  template <int dim>
+  void
   MPMSolver<dim>::write_summary(const double wall_time)
   {
-    const auto times = timer.get_summary_data(TimerOutput::total_wall_time);
+    measure_final_state();
+    const double max_tensile_stress = final_state.max_tensile_vertical_stress;
+    const double total_mass         = final_state.total_mass;
+    const auto   times = timer.get_summary_data(TimerOutput::total_wall_time);
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
     std::ostringstream json;
@@ -804,6 +1172,16 @@ namespace impm
          << "  \"newton_iterations\": " << total_newton_iterations << ",\n";
     if (last_error >= 0.)
       json << "  \"error_sigma_zz\": " << last_error << ",\n";
+    json << "  \"load_step_cuts\": " << n_cuts << ",\n"
+         << "  \"largest_point_increment_in_cells\": "
+         << largest_point_increment << ",\n"
+         << "  \"max_reaction_imbalance\": " << max_reaction_imbalance << ",\n"
+         << "  \"max_tensile_vertical_stress\": " << max_tensile_stress << ",\n"
+         << "  \"total_mass\": " << total_mass << ",\n";
+    if (parameters.solver.estimate_condition)
+      json << "  \"worst_condition_estimate\": " << worst_condition << ",\n"
+           << "  \"smallest_reciprocal_condition_estimate\": "
+           << (worst_condition > 0. ? 1. / worst_condition : 0.) << ",\n";
     json << "  \"wall_time\": " << wall_time << ",\n"
          << "  \"wall_time_per_phase\": {";
     bool first = true;
@@ -865,7 +1243,68 @@ namespace impm
               << (min_newton_order >= 1.7 ? "yes" : "NO") << '\n';
     std::cout << "material points: " << material_points.n_global_particles()
               << ", total Newton iterations: " << total_newton_iterations
-              << '\n';
+              << ", load-step cuts: " << n_cuts << '\n';
+    char buffer[160];
+    std::snprintf(buffer,
+                  sizeof(buffer),
+                  "total mass: %.8e (initial %.8e)\n",
+                  final_state.total_mass,
+                  initial_mass);
+    std::cout << buffer;
+    if (!reaction_columns.empty() && parameters.gravity.enabled)
+      std::cout << "reactions balance the load to 1e-8 in every step: "
+                << (max_reaction_imbalance < 1e-8 ? "yes" : "NO") << '\n';
+    static const char *axis[] = {"x", "y", "z"};
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      "extent in %s: initial points [%.4f, %.4f], final "
+                      "[%.4f, %.4f]\n",
+                      axis[d],
+                      final_state.initial_min[d],
+                      final_state.initial_max[d],
+                      final_state.final_min[d],
+                      final_state.final_max[d]);
+        std::cout << buffer;
+      }
+    if (parameters.testing.reference_extent.size() == dim)
+      {
+        double distance = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          distance = std::max(distance,
+                              std::abs(final_state.final_max[d] -
+                                       parameters.testing.reference_extent[d]));
+        std::cout << "final extent within "
+                  << parameters.testing.reference_tolerance
+                  << " m of the reference: "
+                  << (distance <= parameters.testing.reference_tolerance ?
+                        "yes" :
+                        "NO")
+                  << '\n';
+      }
+    std::snprintf(buffer,
+                  sizeof(buffer),
+                  "largest vertical stress (tension positive): %.4e\n",
+                  final_state.max_tensile_vertical_stress);
+    std::cout << buffer;
+    if (parameters.output.analytical_solution == "column")
+      {
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      "stress oscillation max |sigma_zz - exact| / "
+                      "(rho_0 g l0): %.4e\n",
+                      final_state.max_column_deviation);
+        std::cout << buffer;
+      }
+    if (parameters.solver.estimate_condition)
+      {
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      "worst condition estimate: %.0e\n",
+                      worst_condition);
+        std::cout << buffer;
+      }
     for (const auto &[id, values] : all)
       {
         std::cout << "point " << id << ": X =";
@@ -882,6 +1321,44 @@ namespace impm
         std::cout << ", sigma_vertical = " << buffer << '\n';
       }
     std::cout << std::flush;
+  }
+
+
+
+  template <int dim>
+  typename MPMSolver<dim>::NewtonOutcome
+  MPMSolver<dim>::solve_load_step(const double         load_factor,
+                                  const unsigned int   load_step,
+                                  std::vector<double> &residuals)
+  {
+    const bool is_root = Utilities::MPI::this_mpi_process(communicator) == 0;
+    residuals.clear();
+    increment = 0.;
+    assemble_external_force(load_factor);
+    for (unsigned int iteration = 0;; ++iteration)
+      {
+        if (!update_stresses())
+          return NewtonOutcome::inverted_point;
+        assemble_residual();
+        const double reference =
+          external_force_norm > 0. ? external_force_norm : 1.;
+        residuals.push_back(residual_norm / reference);
+        if (is_root)
+          newton_file << load_step << ',' << iteration << ','
+                      << std::setprecision(6) << residuals.back() << '\n';
+        if (!std::isfinite(residuals.back()))
+          return NewtonOutcome::not_finite;
+        if (residuals.back() < parameters.solver.tolerance)
+          return NewtonOutcome::converged;
+        if (residuals.back() >
+            parameters.solver.divergence_factor * residuals.front())
+          return NewtonOutcome::diverged;
+        if (iteration == parameters.solver.max_iterations)
+          return NewtonOutcome::iteration_limit;
+        assemble_matrix();
+        solve_linear_system(parameters.solver.estimate_condition &&
+                            iteration == 0);
+      }
   }
 
 
@@ -910,17 +1387,28 @@ namespace impm
           << " (" << parameters.material_points.basis << ")\n"
           << "  material: " << material->description() << '\n'
           << "  effects: " << (parameters.gravity.enabled ? "gravity, " : "")
-          << "grid-face constraints" << std::endl;
+          << "grid-face constraints"
+          << (parameters.stabilisation.enabled ?
+                ", ghost stabilisation (penalty scale " +
+                  std::to_string(parameters.stabilisation.penalty_scale) + ")" :
+                std::string())
+          << std::endl;
 
+    static const char *face_names[] = {
+      "xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
+    static const char *axis_names[] = {"x", "y", "z"};
     const bool column = parameters.output.analytical_solution == "column";
     if (is_root)
       {
         steps_file.open(output_directory + "/steps.csv");
         newton_file.open(output_directory + "/newton.csv");
-        steps_file << "step,load_factor,newton_iterations,relative_residual,"
-                      "system_dofs";
+        steps_file << "step,load_factor,load_increment,converged,"
+                      "newton_iterations,relative_residual,system_dofs";
         if (column)
           steps_file << ",error_sigma_zz";
+        for (const unsigned int c : reaction_columns)
+          steps_file << ",reaction_" << face_names[c / dim] << '_'
+                     << axis_names[c % dim];
         for (const auto &phase : phase_names)
           {
             std::string column_name = phase;
@@ -933,76 +1421,94 @@ namespace impm
     if (parameters.output.interval > 0)
       write_points(0., 0);
 
+    static const char            *outcome_names[] = {"converged",
+                                                     "iteration limit",
+                                                     "diverged",
+                                                     "non-finite residual",
+                                                     "inverted point",
+                                                     "point increment too large"};
     std::map<std::string, double> previous_times;
-    const unsigned int            n_steps = parameters.solver.n_load_steps;
-    for (unsigned int load_step = 1; load_step <= n_steps; ++load_step)
+    const double        nominal_step = 1. / parameters.solver.n_load_steps;
+    double              step_size    = nominal_step;
+    double              load_factor  = 0.;
+    unsigned int        load_step    = 0;
+    bool                new_state    = true;
+    std::vector<double> residuals;
+    std::ostringstream  failures;
+    while (load_factor < 1.)
       {
-        const double load_factor = static_cast<double>(load_step) / n_steps;
-        evaluate_basis();
-        number_system_dofs();
-        increment = 0.;
-        assemble_external_force(load_factor);
-
-        std::vector<double> residuals;
-        unsigned int        iteration = 0;
-        for (;; ++iteration)
+        // The last step lands exactly on the full load.
+        const double start = load_factor;
+        const double target =
+          (load_factor + step_size > 1. - 1e-12) ? 1. : load_factor + step_size;
+        if (new_state)
           {
-            update_stresses();
-            assemble_residual();
-            const double reference =
-              external_force_norm > 0. ? external_force_norm : 1.;
-            residuals.push_back(residual_norm / reference);
-            if (is_root)
-              newton_file << load_step << ',' << iteration << ','
-                          << std::setprecision(6) << residuals.back() << '\n';
-            if (!std::isfinite(residuals.back()) ||
-                iteration == parameters.solver.max_iterations)
-              {
-                std::ostringstream message;
-                message << "Load step " << load_step << " (load factor "
-                        << load_factor << "): Newton "
-                        << (std::isfinite(residuals.back()) ?
-                              "did not converge within " +
-                                std::to_string(iteration) + " iterations" :
-                              std::string("diverged (non-finite residual)"))
-                        << ". Relative residuals:";
-                for (const double r : residuals)
-                  message << ' ' << r;
-                if (is_root)
-                  newton_file.flush();
-                AssertThrow(false, ExcMessage(message.str()));
-              }
-            if (residuals.back() < parameters.solver.tolerance)
-              break;
-            assemble_matrix();
-            solve_linear_system();
+            evaluate_basis();
+            number_system_dofs();
+            new_state = false;
           }
-        total_newton_iterations += iteration;
-        // Observed order of the last contraction above round-off, where the
-        // iterate is near the solution: about 2 for full Newton.
-        for (unsigned int k = 1; k + 1 < residuals.size(); ++k)
-          if (residuals[k] < 1e-2 && residuals[k + 1] > 1e-10)
-            min_newton_order =
-              std::min(min_newton_order,
-                       std::log(residuals[k + 1]) / std::log(residuals[k]));
-        update_material_points(load_step);
-
-        if (column)
-          last_error = column_error(load_factor);
-        if (parameters.output.interval > 0 &&
-            (load_step % parameters.output.interval == 0 ||
-             load_step == n_steps))
-          write_points(load_factor, load_step);
+        NewtonOutcome outcome =
+          solve_load_step(target, load_step + 1, residuals);
+        // A converged step that moves a point by more than the allowed
+        // fraction of a cell is cut too: the basis of the step is that of
+        // its start, and the load path is followed more closely.
+        double point_increment = 0.;
+        if (outcome == NewtonOutcome::converged)
+          {
+            point_increment = max_point_increment();
+            if (parameters.solver.step_control &&
+                point_increment > parameters.solver.maximum_point_increment)
+              outcome = NewtonOutcome::increment_too_large;
+          }
+        const unsigned int iterations = residuals.size() - 1;
+        total_newton_iterations += iterations;
+        const bool converged = outcome == NewtonOutcome::converged;
 
         std::ostringstream line;
-        line << "step " << std::setw(3) << load_step << "  load " << std::fixed
-             << std::setprecision(4) << load_factor << "  iterations "
-             << iteration;
-        if (column)
+        line << "step " << std::setw(3) << load_step + 1 << "  load "
+             << std::fixed << std::setprecision(4) << target;
+        largest_point_increment =
+          std::max(largest_point_increment,
+                   outcome == NewtonOutcome::converged ? point_increment : 0.);
+        if (converged)
           {
-            char buffer[32];
-            std::snprintf(buffer, sizeof(buffer), "%.4e", last_error);
-            line << "  error " << buffer;
+            compute_reactions();
+            // Observed order of the last contraction above round-off: about
+            // 2 for full Newton near the solution.
+            for (unsigned int k = 1; k + 1 < residuals.size(); ++k)
+              if (residuals[k] < 1e-3 && residuals[k + 1] > 1e-10)
+                min_newton_order =
+                  std::min(min_newton_order,
+                           std::log(residuals[k + 1]) / std::log(residuals[k]));
+            ++load_step;
+            update_material_points(load_step);
+            new_state   = true;
+            load_factor = target;
+            if (column)
+              last_error = column_error(load_factor);
+            if (parameters.output.interval > 0 &&
+                (load_step % parameters.output.interval == 0 ||
+                 load_factor == 1.))
+              write_points(load_factor, load_step);
+            line << "  iterations " << iterations;
+            if (column)
+              {
+                char buffer[32];
+                std::snprintf(buffer, sizeof(buffer), "%.4e", last_error);
+                line << "  error " << buffer;
+              }
+          }
+        else
+          {
+            ++n_cuts;
+            failures << "\n  load " << target << " (increment "
+                     << target - load_factor
+                     << "): " << outcome_names[static_cast<int>(outcome)]
+                     << ", relative residuals:";
+            for (const double r : residuals)
+              failures << ' ' << r;
+            line << "  " << outcome_names[static_cast<int>(outcome)]
+                 << " after " << iterations << " iterations: step cut";
           }
         test_lines.push_back(line.str());
         pcout << line.str() << "  residual " << std::scientific
@@ -1011,11 +1517,15 @@ namespace impm
         const auto times = timer.get_summary_data(TimerOutput::total_wall_time);
         if (is_root)
           {
-            steps_file << load_step << ',' << std::setprecision(10)
-                       << load_factor << ',' << iteration << ','
-                       << residuals.back() << ',' << n_system_dofs_last;
+            steps_file << load_step + (converged ? 0 : 1) << ','
+                       << std::setprecision(10) << target << ','
+                       << target - start << ',' << (converged ? 1 : 0) << ','
+                       << iterations << ',' << residuals.back() << ','
+                       << n_system_dofs_last;
             if (column)
-              steps_file << ',' << last_error;
+              steps_file << ',' << (converged ? last_error : 0.);
+            for (const unsigned int c : reaction_columns)
+              steps_file << ',' << (converged ? reactions[c] : 0.);
             for (const auto &phase : phase_names)
               {
                 const double now = times.count(phase) ? times.at(phase) : 0.;
@@ -1024,6 +1534,31 @@ namespace impm
               }
             steps_file << std::endl;
             newton_file.flush();
+          }
+
+        if (converged)
+          {
+            if (parameters.solver.step_control &&
+                iterations <= parameters.solver.easy_iterations)
+              step_size = std::min(2. * step_size, nominal_step);
+          }
+        else
+          {
+            std::ostringstream message;
+            message << "Load step " << load_step + 1 << " (from load factor "
+                    << load_factor << " to " << target << "): Newton "
+                    << outcome_names[static_cast<int>(outcome)] << '.';
+            if (!parameters.solver.step_control)
+              throw std::runtime_error(message.str() +
+                                       " Relative residuals:" + failures.str());
+            step_size /= 2.;
+            if (step_size < parameters.solver.minimum_step)
+              throw std::runtime_error(
+                message.str() +
+                " The load increment would fall below 'Solver/Minimum load "
+                "step' = " +
+                std::to_string(parameters.solver.minimum_step) +
+                ". Attempts:" + failures.str());
           }
       }
 

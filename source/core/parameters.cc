@@ -271,6 +271,48 @@ namespace impm
                         "1e-12",
                         Patterns::Double(1e-16, 1e-2),
                         "Relative residual of the iterative linear solver.");
+      prm.declare_entry("Step control",
+                        "true",
+                        Patterns::Bool(),
+                        "Automatic load-step control: a step whose Newton "
+                        "solve fails (iteration limit, divergence, a "
+                        "non-finite value, an inverted point) is restarted "
+                        "from the last converged state with half the load "
+                        "increment; easy steps grow it again, up to the "
+                        "nominal 1/(Load steps). If false, a failed step "
+                        "stops the run.");
+      prm.declare_entry("Minimum load step",
+                        "1e-4",
+                        Patterns::Double(1e-12, 1.),
+                        "Smallest load increment, as a fraction of the "
+                        "total load (1e-12 to 1); a step that fails at this "
+                        "size stops the run with its residual history.");
+      prm.declare_entry("Divergence factor",
+                        "1e4",
+                        Patterns::Double(1.),
+                        "A Newton solve has diverged when its relative "
+                        "residual exceeds this multiple of the step's first "
+                        "residual (>= 1).");
+      prm.declare_entry("Easy step iterations",
+                        "4",
+                        Patterns::Integer(1),
+                        "A step converged in at most this many Newton "
+                        "iterations doubles the next load increment (up to "
+                        "the nominal one).");
+      prm.declare_entry("Maximum point increment",
+                        "1",
+                        Patterns::Double(0.),
+                        "With step control: a converged step that moves a "
+                        "point by more than this many cell sizes in one "
+                        "direction is cut, so that the load path is followed "
+                        "and no point outruns the basis of its step (> 0).");
+      prm.declare_entry("Estimate condition number",
+                        "false",
+                        Patterns::Bool(),
+                        "Estimate the 2-norm condition number of the first "
+                        "matrix of every load step (three extra direct "
+                        "solves; direct solver only); the worst goes to "
+                        "summary.json.");
       prm.leave_subsection();
     }
 
@@ -278,11 +320,56 @@ namespace impm
     Solver::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
-      n_load_steps     = prm.get_integer("Load steps");
-      tolerance        = prm.get_double("Tolerance");
-      max_iterations   = prm.get_integer("Maximum iterations");
-      linear_solver    = prm.get("Linear solver");
-      linear_tolerance = prm.get_double("Linear tolerance");
+      n_load_steps            = prm.get_integer("Load steps");
+      tolerance               = prm.get_double("Tolerance");
+      max_iterations          = prm.get_integer("Maximum iterations");
+      linear_solver           = prm.get("Linear solver");
+      linear_tolerance        = prm.get_double("Linear tolerance");
+      step_control            = prm.get_bool("Step control");
+      minimum_step            = prm.get_double("Minimum load step");
+      divergence_factor       = prm.get_double("Divergence factor");
+      easy_iterations         = prm.get_integer("Easy step iterations");
+      maximum_point_increment = prm.get_double("Maximum point increment");
+      estimate_condition      = prm.get_bool("Estimate condition number");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Stabilisation::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Ghost stabilisation");
+      prm.declare_entry("Enabled",
+                        "true",
+                        Patterns::Bool(),
+                        "Penalise the jump of the normal gradient of the "
+                        "displacement increment across faces between two "
+                        "cells in the system when one of them is filled "
+                        "to less than 'Fill threshold', so that a node fed "
+                        "only by the edge of a point's domain cannot make "
+                        "the system singular.");
+      prm.declare_entry("Penalty scale",
+                        "0.01",
+                        Patterns::Double(0.),
+                        "gamma >= 0: the face penalty is gamma E h times the "
+                        "integral of the products of the jumps.");
+      prm.declare_entry("Fill threshold",
+                        "0.9",
+                        Patterns::Double(0., 10.),
+                        "Cells whose points' current volume is less than "
+                        "this fraction of the cell's volume are treated as "
+                        "partly filled (0 to 10).");
+      prm.leave_subsection();
+    }
+
+    void
+    Stabilisation::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Ghost stabilisation");
+      enabled        = prm.get_bool("Enabled");
+      penalty_scale  = prm.get_double("Penalty scale");
+      fill_threshold = prm.get_double("Fill threshold");
       prm.leave_subsection();
     }
 
@@ -335,6 +422,19 @@ namespace impm
                         Patterns::Integer(0),
                         "Number of points, lowest ids first, whose final "
                         "state the test summary prints.");
+      prm.declare_entry("Reference extent",
+                        "",
+                        Patterns::List(Patterns::Double(), 0, 3),
+                        "If given (one number per dimension), the test "
+                        "summary checks that the upper corner of the final "
+                        "points' bounding box is within 'Reference "
+                        "tolerance' of it: a final state computed another "
+                        "way.");
+      prm.declare_entry("Reference tolerance",
+                        "0",
+                        Patterns::Double(0.),
+                        "Allowed distance (in m, per direction) from "
+                        "'Reference extent'.");
       prm.leave_subsection();
     }
 
@@ -344,6 +444,9 @@ namespace impm
       prm.enter_subsection("Testing");
       enabled          = prm.get_bool("Enabled");
       n_printed_points = prm.get_integer("Printed points");
+      reference_extent = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get("Reference extent")));
+      reference_tolerance = prm.get_double("Reference tolerance");
       prm.leave_subsection();
     }
 
@@ -359,6 +462,7 @@ namespace impm
       material_points.parse_parameters(prm);
       gravity.parse_parameters(prm);
       solver.parse_parameters(prm);
+      stabilisation.parse_parameters(prm);
       output.parse_parameters(prm);
       testing.parse_parameters(prm);
     }
@@ -377,6 +481,7 @@ namespace impm
       MaterialPoints::declare_parameters(prm);
       Gravity<2>::declare_parameters(prm);
       Solver::declare_parameters(prm);
+      Stabilisation::declare_parameters(prm);
       Output::declare_parameters(prm);
       Testing::declare_parameters(prm);
     }

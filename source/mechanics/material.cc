@@ -195,6 +195,14 @@ namespace impm
 
 
 
+  double
+  HenckyVonMises::elastic_modulus() const
+  {
+    return youngs_modulus;
+  }
+
+
+
   namespace MaterialRegistry
   {
     namespace

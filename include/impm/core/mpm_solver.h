@@ -13,6 +13,7 @@
 #include <deal.II/fe/mapping_q1.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -82,6 +83,26 @@ namespace impm
       ConstitutiveUpdate update;
     };
 
+    /** A face penalty of ghost stabilisation, fixed during a load step. */
+    struct FacePenalty
+    {
+      /** Local indices (full vectors) of both cells' DoFs. */
+      std::vector<unsigned int> dofs;
+      /** The penalty matrix on those DoFs. */
+      FullMatrix<double> matrix;
+    };
+
+    /** Why a Newton solve stopped. */
+    enum class NewtonOutcome
+    {
+      converged,
+      iteration_limit,
+      diverged,
+      not_finite,
+      inverted_point,
+      increment_too_large
+    };
+
     void
     make_grid();
     void
@@ -93,6 +114,12 @@ namespace impm
     void
     number_system_dofs();
     void
+    setup_ghost_penalty(const std::vector<bool> &touched);
+    NewtonOutcome
+    solve_load_step(const double         load_factor,
+                    const unsigned int   load_step,
+                    std::vector<double> &residuals);
+    bool
     update_stresses();
     void
     assemble_external_force(const double load_factor);
@@ -101,13 +128,19 @@ namespace impm
     void
     assemble_matrix();
     void
-    solve_linear_system();
+    solve_linear_system(const bool estimate_condition);
+    void
+    compute_reactions();
+    double
+    max_point_increment() const;
     void
     update_material_points(const unsigned int load_step);
     double
     column_error(const double load_factor) const;
     void
     write_points(const double load_factor, const unsigned int load_step);
+    void
+    measure_final_state();
     void
     write_summary(const double wall_time);
     void
@@ -150,6 +183,35 @@ namespace impm
 
     double residual_norm       = 0.;
     double external_force_norm = 0.;
+
+    /** Ghost stabilisation faces of the current load step. */
+    std::vector<FacePenalty> ghost_faces;
+
+    /** Owned constrained DoFs (local index) and their face * dim + comp. */
+    std::vector<std::pair<unsigned int, unsigned int>> reaction_dofs;
+    /** The (face * dim + component) pairs that carry reactions. */
+    std::vector<unsigned int> reaction_columns;
+    /** Reactions of the last converged step, by face * dim + component. */
+    std::vector<double> reactions;
+    /** Largest |sum of reactions + external force| / |external force|. */
+    double max_reaction_imbalance = 0.;
+    /** Worst condition estimate seen (0 if not estimated). */
+    double worst_condition = 0.;
+    /** Number of load-step cuts. */
+    unsigned int n_cuts = 0;
+    /** Largest point displacement of an accepted step, in cells. */
+    double largest_point_increment = 0.;
+    /** Total mass of the points when they were created. */
+    double initial_mass = 0.;
+
+    /** Global measures of the final state, for the summaries. */
+    struct FinalState
+    {
+      double     total_mass                  = 0.;
+      double     max_tensile_vertical_stress = 0.;
+      double     max_column_deviation        = 0.;
+      Point<dim> initial_min, initial_max, final_min, final_max;
+    } final_state;
 
     PointOutput<dim> point_output;
     unsigned int     n_output_steps = 0;

@@ -139,8 +139,43 @@ namespace impm
       std::string linear_solver;
       /** Relative tolerance of the iterative linear solver. */
       double linear_tolerance;
+      /** Cut failed load steps and grow easy ones (else a failure stops). */
+      bool step_control;
+      /** Smallest load increment, as a fraction of the total load. */
+      double minimum_step;
+      /** A step has failed when the residual exceeds this times its first. */
+      double divergence_factor;
+      /** A step that needs at most this many iterations may grow the next. */
+      unsigned int easy_iterations;
+      /** Largest point displacement of one step, in cells (step control). */
+      double maximum_point_increment;
+      /** Estimate the condition number of each step's first matrix. */
+      bool estimate_condition;
 
       /** @brief Declare the entries in subsection "Solver". */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read them. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /**
+     * @brief Ghost stabilisation: a penalty on the jump of the normal
+     * gradient of the displacement increment across the faces of cells that
+     * material barely fills (Burman's ghost penalty, as used for implicit MPM
+     * by Coombs).
+     */
+    struct Stabilisation
+    {
+      /** Whether the penalty is applied. */
+      bool enabled;
+      /** Dimensionless penalty scale gamma (penalty = gamma E h). */
+      double penalty_scale;
+      /** Cells filled to less than this volume fraction are stabilised. */
+      double fill_threshold;
+
+      /** @brief Declare the entries in subsection "Ghost stabilisation". */
       static void
       declare_parameters(ParameterHandler &prm);
       /** @brief Read them. */
@@ -171,6 +206,11 @@ namespace impm
       bool enabled;
       /** Number of points (by id) whose state is printed at the end. */
       unsigned int n_printed_points;
+      /** Expected upper corner of the final points' bounding box (empty:
+       * none), e.g. from a run with other settings. */
+      std::vector<double> reference_extent;
+      /** Allowed distance from the reference extent. */
+      double reference_tolerance;
 
       /** @brief Declare the entries in subsection "Testing". */
       static void
@@ -196,6 +236,8 @@ namespace impm
       Gravity<dim> gravity;
       /** Solver. */
       Solver solver;
+      /** Ghost stabilisation. */
+      Stabilisation stabilisation;
       /** Output. */
       Output output;
       /** Testing. */

@@ -90,6 +90,12 @@ namespace impm
      */
     virtual std::string
     description() const = 0;
+
+    /**
+     * @brief Young's modulus, the stiffness that scales penalties.
+     */
+    virtual double
+    elastic_modulus() const = 0;
   };
 
   /**
@@ -128,6 +134,9 @@ namespace impm
 
     std::string
     description() const override;
+
+    double
+    elastic_modulus() const override;
 
     /** Lame's first parameter. */
     double lambda;
