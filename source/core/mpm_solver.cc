@@ -668,6 +668,8 @@ namespace impm
   MPMSolver<dim>::assemble_residual()
   {
     TimerOutput::Scope scope(timer, "assembly");
+    const bool         updated_lagrangian =
+      parameters.solver.formulation == "updated Lagrangian";
     using P        = PointProperties<dim>;
     internal_force = 0.;
     unsigned int p = 0;
@@ -677,17 +679,42 @@ namespace impm
         const auto       properties = point.get_properties();
         const double     Jn =
           determinant(read_tensor(properties, P::deformation_gradient));
-        // f_int = sum_p P~ grad S V^n, V^n = J_n V^0.
-        const Tensor<2, dim> stress =
-          PulledBackStress<dim>::stress(step.update.kirchhoff_stress,
-                                        step.deformation_increment_inverse,
-                                        Jn) *
-          (Jn * properties[P::initial_volume]);
-        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+        if (!updated_lagrangian)
           {
-            const Tensor<1, dim> force = stress * step.support.gradients[v];
+            // f_int = sum_p P~ grad S V^n, V^n = J_n V^0.
+            const Tensor<2, dim> stress =
+              PulledBackStress<dim>::stress(step.update.kirchhoff_stress,
+                                            step.deformation_increment_inverse,
+                                            Jn) *
+              (Jn * properties[P::initial_volume]);
+            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+              {
+                const Tensor<1, dim> force = stress * step.support.gradients[v];
+                for (unsigned int i = 0; i < dim; ++i)
+                  internal_force.local_element(step.dofs[v * dim + i]) +=
+                    force[i];
+              }
+          }
+        else
+          {
+            // f_int = sum_p sigma grad_x S V^{n+1} with the gradients mapped
+            // to the current configuration, grad_x S = grad S dF^-1, and
+            // sigma V^{n+1} = tau V^0.
+            Tensor<2, dim> stress;
             for (unsigned int i = 0; i < dim; ++i)
-              internal_force.local_element(step.dofs[v * dim + i]) += force[i];
+              for (unsigned int j = 0; j < dim; ++j)
+                stress[i][j] = step.update.kirchhoff_stress[i][j] *
+                               properties[P::initial_volume];
+            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+              {
+                const Tensor<1, dim> mapped_gradient =
+                  step.support.gradients[v] *
+                  step.deformation_increment_inverse;
+                const Tensor<1, dim> force = stress * mapped_gradient;
+                for (unsigned int i = 0; i < dim; ++i)
+                  internal_force.local_element(step.dofs[v * dim + i]) +=
+                    force[i];
+              }
           }
       }
     // Ghost stabilisation acts on the displacement increment.
@@ -722,11 +749,14 @@ namespace impm
     using P                         = PointProperties<dim>;
     system_matrix                   = 0.;
     constexpr unsigned int max_dofs = PointSupport<dim>::max_nodes * dim;
-    std::array<types::global_dof_index, max_dofs> rows;
-    std::array<unsigned int, max_dofs>            local;
-    std::array<double, max_dofs>                  values;
-    Tensor<4, 3>                                  C;
-    unsigned int                                  p = 0;
+    std::array<types::global_dof_index, max_dofs>            rows;
+    std::array<unsigned int, max_dofs>                       local;
+    std::array<double, max_dofs>                             values;
+    Tensor<4, 3>                                             C;
+    std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes> mapped_gradients;
+    const bool updated_lagrangian =
+      parameters.solver.formulation == "updated Lagrangian";
+    unsigned int p = 0;
     for (const auto &point : material_points)
       {
         const PointStep &step       = point_steps[p++];
@@ -735,12 +765,36 @@ namespace impm
         const double     Jn =
           determinant(read_tensor(properties, P::deformation_gradient));
         material->tangent(step.update, dim, C);
-        const Tensor<4, dim> A =
-          PulledBackStress<dim>::tangent(C,
-                                         step.update.kirchhoff_stress,
-                                         step.deformation_increment_inverse,
-                                         Jn);
-        const double volume = Jn * properties[P::initial_volume];
+        Tensor<4, dim> A;
+        double         volume;
+        const std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>
+          *gradients = &s.gradients;
+        if (!updated_lagrangian)
+          {
+            A =
+              PulledBackStress<dim>::tangent(C,
+                                             step.update.kirchhoff_stress,
+                                             step.deformation_increment_inverse,
+                                             Jn);
+            volume = Jn * properties[P::initial_volume];
+          }
+        else
+          {
+            // Spatial tangent a = C/J - sigma_il delta_jk over V^{n+1} = J
+            // V^0, with the gradients mapped to the current configuration.
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                for (unsigned int k = 0; k < dim; ++k)
+                  for (unsigned int l = 0; l < dim; ++l)
+                    A[i][j][k][l] =
+                      C[i][j][k][l] -
+                      (j == k ? step.update.kirchhoff_stress[i][l] : 0.);
+            volume = properties[P::initial_volume];
+            for (unsigned int v = 0; v < s.n_nodes; ++v)
+              mapped_gradients[v] =
+                s.gradients[v] * step.deformation_increment_inverse;
+            gradients = &mapped_gradients;
+          }
 
         unsigned int n = 0;
         for (unsigned int k = 0; k < s.n_nodes * dim; ++k)
@@ -755,12 +809,12 @@ namespace impm
             const unsigned int v = local[a] / dim, i = local[a] % dim;
             Tensor<2, dim>     B;
             for (unsigned int j = 0; j < dim; ++j)
-              B += s.gradients[v][j] * A[i][j];
+              B += (*gradients)[v][j] * A[i][j];
             B *= volume;
             for (unsigned int b = 0; b < n; ++b)
               {
                 const unsigned int w = local[b] / dim, k = local[b] % dim;
-                values[b] = B[k] * s.gradients[w];
+                values[b] = B[k] * (*gradients)[w];
               }
             system_matrix.add(rows[a], n, rows.data(), values.data());
           }
@@ -1153,6 +1207,15 @@ namespace impm
     const double max_tensile_stress = final_state.max_tensile_vertical_stress;
     const double total_mass         = final_state.total_mass;
     const auto   times = timer.get_summary_data(TimerOutput::total_wall_time);
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const double peak_memory_mb =
+      Utilities::MPI::max(memory.VmHWM / 1024., communicator);
+    const auto phase_time = [&](const std::string &phase) {
+      return times.count(phase) ? times.at(phase) : 0.;
+    };
+    const double point_evaluations =
+      double(material_points.n_global_particles()) * residual_evaluations;
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
     std::ostringstream json;
@@ -1182,6 +1245,15 @@ namespace impm
       json << "  \"worst_condition_estimate\": " << worst_condition << ",\n"
            << "  \"smallest_reciprocal_condition_estimate\": "
            << (worst_condition > 0. ? 1. / worst_condition : 0.) << ",\n";
+    json << "  \"formulation\": \"" << parameters.solver.formulation << "\",\n"
+         << "  \"residual_evaluations\": " << residual_evaluations << ",\n"
+         << "  \"microseconds_per_point_evaluation\": "
+         << 1e6 * (phase_time("stress update") + phase_time("assembly")) /
+              point_evaluations
+         << ",\n"
+         << "  \"linear_solve_share\": "
+         << phase_time("linear solve") / wall_time << ",\n"
+         << "  \"peak_memory_mb\": " << peak_memory_mb << ",\n";
     json << "  \"wall_time\": " << wall_time << ",\n"
          << "  \"wall_time_per_phase\": {";
     bool first = true;
@@ -1462,6 +1534,7 @@ namespace impm
           }
         const unsigned int iterations = residuals.size() - 1;
         total_newton_iterations += iterations;
+        residual_evaluations += residuals.size();
         const bool converged = outcome == NewtonOutcome::converged;
 
         std::ostringstream line;

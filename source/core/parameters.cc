@@ -248,6 +248,17 @@ namespace impm
     Solver::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
+      prm.declare_entry("Formulation",
+                        "previously converged",
+                        Patterns::Selection(
+                          "previously converged|updated Lagrangian"),
+                        "Statement of equilibrium: previously converged "
+                        "(the paper's eq. 9-10: the pulled-back stress on "
+                        "the start-of-step grid) or updated Lagrangian "
+                        "(eq. 7-8: Cauchy stress with the basis gradients "
+                        "mapped to the current configuration in every "
+                        "iteration). Both give the same iterates; they "
+                        "differ in cost.");
       prm.declare_entry("Load steps",
                         "50",
                         Patterns::Integer(1),
@@ -320,6 +331,7 @@ namespace impm
     Solver::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
+      formulation             = prm.get("Formulation");
       n_load_steps            = prm.get_integer("Load steps");
       tolerance               = prm.get_double("Tolerance");
       max_iterations          = prm.get_integer("Maximum iterations");

@@ -199,6 +199,8 @@ namespace impm
     double worst_condition = 0.;
     /** Number of load-step cuts. */
     unsigned int n_cuts = 0;
+    /** Residual evaluations (stress updates) over the run. */
+    unsigned int residual_evaluations = 0;
     /** Largest point displacement of an accepted step, in cells. */
     double largest_point_increment = 0.;
     /** Total mass of the points when they were created. */

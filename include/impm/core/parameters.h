@@ -129,6 +129,9 @@ namespace impm
     /** @brief Load stepping, Newton and the linear solver. */
     struct Solver
     {
+      /** "previously converged" (eq. 9-10) or "updated Lagrangian" (eq. 7-8,
+       * with mapped derivatives): the same iterates, different cost. */
+      std::string formulation;
       /** Number of equal load steps. */
       unsigned int n_load_steps;
       /** Convergence when |r| / |f_ext| falls below this. */
