@@ -103,11 +103,12 @@ namespace impm
 
 
   template <int dim>
-  MPMSolver<dim>::MPMSolver(const Parameters::All<dim> &parameters,
-                            std::unique_ptr<Material>   material_model,
-                            const MPI_Comm              communicator)
+  MPMSolver<dim>::MPMSolver(
+    const Parameters::All<dim>                    &parameters,
+    std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects,
+    const MPI_Comm                                 communicator)
     : parameters(parameters)
-    , material(std::move(material_model))
+    , force_effects(std::move(force_effects))
     , communicator(communicator)
     , pcout(std::cout,
             Utilities::MPI::this_mpi_process(communicator) == 0 &&
@@ -155,68 +156,86 @@ namespace impm
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
 
-    constraints.clear();
-    constraints.reinit(locally_relevant_dofs);
-    for (unsigned int face = 0; face < 2 * dim; ++face)
-      {
-        const std::string &condition = parameters.grid.face_conditions[face];
-        if (condition == "none")
-          continue;
-        std::vector<bool> mask(dim, condition == "fixed");
-        mask[face / 2] = true;
-        VectorTools::interpolate_boundary_values(mapping,
-                                                 dof_handler,
-                                                 face,
-                                                 Functions::ZeroFunction<dim>(
-                                                   dim),
-                                                 constraints,
-                                                 ComponentMask(mask));
-      }
-    constraints.close();
-
     increment.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
     internal_force.reinit(increment);
     external_force.reinit(increment);
+    const auto &partitioner = *increment.get_partitioner();
 
-    // Owned constrained DoFs carry reactions; a DoF on two constrained faces
-    // counts for the first of them.
+    // Grid-face conditions: every constrained DoF is kept out of the linear
+    // system; prescribed ones get their share of the displacement in each
+    // load step. A DoF on two constrained faces follows the first of them,
+    // and its reaction counts there.
+    constraints.clear();
+    constraints.reinit(locally_relevant_dofs);
+    prescribed_dofs.clear();
     reaction_dofs.clear();
     reaction_columns.clear();
-    {
-      std::vector<bool> assigned(locally_owned_dofs.n_elements(), false);
-      for (unsigned int face = 0; face < 2 * dim; ++face)
-        {
-          const std::string &condition = parameters.grid.face_conditions[face];
-          if (condition == "none")
-            continue;
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              if (condition == "roller" && c != face / 2)
-                continue;
-              std::vector<bool> mask(dim, false);
-              mask[c] = true;
-              const IndexSet dofs =
-                DoFTools::extract_boundary_dofs(dof_handler,
-                                                ComponentMask(mask),
-                                                {types::boundary_id(face)});
-              reaction_columns.push_back(face * dim + c);
-              for (const auto dof : dofs)
-                if (locally_owned_dofs.is_element(dof))
+    const auto &grid_parameters = parameters.grid;
+    for (unsigned int face = 0; face < 2 * dim; ++face)
+      {
+        const std::string &condition = grid_parameters.face_conditions[face];
+        for (unsigned int c = 0; c < dim; ++c)
+          if (condition == "fixed" || condition == "prescribed" ||
+              ((condition == "roller" || condition == "prescribed normal") &&
+               c == face / 2))
+            reaction_columns.push_back(face * dim + c);
+      }
+    std::vector<bool> assigned(locally_owned_dofs.n_elements() +
+                                 partitioner.n_ghost_indices(),
+                               false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->at_boundary(f))
+              continue;
+            const unsigned int face = cell->face(f)->boundary_id();
+            const std::string &condition =
+              grid_parameters.face_conditions[face];
+            if (condition == "none")
+              continue;
+            const bool prescribed = condition.rfind("prescribed", 0) == 0;
+            for (const unsigned int v : cell->face(f)->vertex_indices())
+              {
+                const Point<dim> x      = cell->face(f)->vertex(v);
+                bool             inside = true;
+                if (grid_parameters.face_has_region[face])
+                  for (unsigned int d = 0; d < dim; ++d)
+                    inside =
+                      inside &&
+                      x[d] >= grid_parameters.face_regions[face].first[d] -
+                                1e-10 * grid.cell_size[d] &&
+                      x[d] <= grid_parameters.face_regions[face].second[d] +
+                                1e-10 * grid.cell_size[d];
+                if (!inside)
+                  continue;
+                for (unsigned int c = 0; c < dim; ++c)
                   {
-                    const unsigned int i =
-                      locally_owned_dofs.index_within_set(dof);
-                    if (!assigned[i])
-                      reaction_dofs.emplace_back(i, face * dim + c);
-                    assigned[i] = true;
+                    const bool all_components =
+                      condition == "fixed" || condition == "prescribed";
+                    if (!all_components && c != face / 2)
+                      continue;
+                    const types::global_dof_index dof =
+                      cell->face(f)->vertex_dof_index(v, c);
+                    const unsigned int local = partitioner.global_to_local(dof);
+                    if (assigned[local])
+                      continue;
+                    assigned[local] = true;
+                    constraints.add_line(dof);
+                    if (prescribed &&
+                        grid_parameters.face_displacements[face][c] != 0.)
+                      prescribed_dofs.emplace_back(
+                        local, grid_parameters.face_displacements[face][c]);
+                    if (local < locally_owned_dofs.n_elements())
+                      reaction_dofs.emplace_back(local, face * dim + c);
                   }
-            }
-        }
-      reactions.assign(2 * dim * dim, 0.);
-    }
+              }
+          }
+    constraints.close();
+    reactions.assign(2 * dim * dim, 0.);
 
     // Map each grid node to the local indices of its DoFs.
     node_dofs.clear();
-    const auto &partitioner = *increment.get_partitioner();
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
@@ -239,40 +258,31 @@ namespace impm
   void
   MPMSolver<dim>::create_material_points()
   {
-    using P = PointProperties<dim>;
-    material_points.initialize(triangulation, mapping, P::n_properties);
-
-    const auto        &body       = parameters.body;
-    const unsigned int n          = body.points_per_direction;
-    unsigned int       n_per_cell = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      n_per_cell *= n;
+    using P                 = PointProperties<dim>;
+    const auto &bodies      = parameters.bodies;
+    bool        any_plastic = false;
+    for (const auto &body : bodies)
+      any_plastic = any_plastic || body.material->is_plastic();
+    layout.initialize(P::n_fixed_properties, any_plastic, bodies.size() > 1);
+    material_points.initialize(triangulation, mapping, layout.n_properties);
 
     double cell_volume = 1.;
     for (unsigned int d = 0; d < dim; ++d)
       cell_volume *= grid.cell_size[d];
-    const double volume = cell_volume / n_per_cell;
 
-    std::vector<double> properties(P::n_properties, 0.);
+    std::vector<double> properties(layout.n_properties, 0.);
     for (unsigned int i = 0; i < 3; ++i)
       {
         properties[P::deformation_gradient + 4 * i]  = 1.;
         properties[P::elastic_left_cauchy_green + i] = 1.;
       }
-    properties[P::initial_volume] = volume;
-    properties[P::mass]           = body.density * volume;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        properties[P::domain_half_length + d] = grid.cell_size[d] / (2. * n);
-        properties[P::initial_domain_half_length + d] =
-          grid.cell_size[d] / (2. * n);
-      }
 
+    // Ids from the structured cell index, the body and the position in the
+    // cell: the same on any number of processes.
+    constexpr unsigned int max_per_cell = dim == 2 ? 100 : 1000;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          // Structured index of the cell gives ids independent of the
-          // partition.
           std::uint64_t cell_index = 0;
           Point<dim>    cell_lower;
           for (int d = dim - 1; d >= 0; --d)
@@ -282,30 +292,56 @@ namespace impm
               cell_index           = cell_index * grid.n_cells[d] + i;
               cell_lower[d]        = grid.node_coordinate(d, i);
             }
-          for (unsigned int q = 0; q < n_per_cell; ++q)
+          std::vector<Point<dim>> placed;
+          for (unsigned int b = 0; b < bodies.size(); ++b)
             {
-              Point<dim>   position, reference;
-              unsigned int rest   = q;
-              bool         inside = true;
+              const auto        &body       = bodies[b];
+              const unsigned int n          = body.points_per_direction;
+              unsigned int       n_per_cell = 1;
+              for (unsigned int d = 0; d < dim; ++d)
+                n_per_cell *= n;
+              const double volume           = cell_volume / n_per_cell;
+              properties[P::initial_volume] = volume;
+              properties[P::mass]           = body.density * volume;
               for (unsigned int d = 0; d < dim; ++d)
                 {
-                  reference[d] = (rest % n + 0.5) / n;
-                  rest /= n;
-                  position[d] =
-                    cell_lower[d] + reference[d] * grid.cell_size[d];
-                  inside = inside && position[d] > body.lower_corner[d] &&
-                           position[d] < body.upper_corner[d];
+                  properties[P::domain_half_length + d] =
+                    grid.cell_size[d] / (2. * n);
+                  properties[P::initial_domain_half_length + d] =
+                    grid.cell_size[d] / (2. * n);
                 }
-              if (!inside)
-                continue;
-              for (unsigned int d = 0; d < dim; ++d)
-                properties[P::initial_position + d] = position[d];
-              material_points.insert_particle(position,
-                                              reference,
-                                              cell_index * n_per_cell + q,
-                                              cell,
-                                              ArrayView<const double>(
-                                                properties));
+              if (layout.body != PointLayout::absent)
+                properties[layout.body] = b;
+              for (unsigned int q = 0; q < n_per_cell; ++q)
+                {
+                  Point<dim>   position, reference;
+                  unsigned int rest = q;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      reference[d] = (rest % n + 0.5) / n;
+                      rest /= n;
+                      position[d] =
+                        cell_lower[d] + reference[d] * grid.cell_size[d];
+                    }
+                  // A position inside two bodies belongs to the first.
+                  if (!body.contains(position) ||
+                      std::any_of(placed.begin(),
+                                  placed.end(),
+                                  [&](const Point<dim> &other) {
+                                    return other.distance(position) <
+                                           1e-12 * grid.cell_size[0];
+                                  }))
+                    continue;
+                  placed.push_back(position);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    properties[P::initial_position + d] = position[d];
+                  material_points.insert_particle(
+                    position,
+                    reference,
+                    (cell_index * Body<dim>::max_bodies + b) * max_per_cell + q,
+                    cell,
+                    ArrayView<const double>(properties));
+                }
             }
         }
     material_points.update_cached_numbers();
@@ -314,9 +350,8 @@ namespace impm
       mass += point.get_properties()[P::mass];
     initial_mass = Utilities::MPI::sum(mass, communicator);
     AssertThrow(material_points.n_global_particles() > 0,
-                ExcMessage("The body (subsection 'Body') contains no "
-                           "material points: no point position of the grid's "
-                           "cells lies inside its box."));
+                ExcMessage("The bodies contain no material points: no point "
+                           "position of the grid's cells lies inside them."));
   }
 
 
@@ -518,9 +553,11 @@ namespace impm
     const QGauss<dim - 1> quadrature(2);
     const UpdateFlags     flags = update_gradients | update_normal_vectors |
                               update_JxW_values | update_quadrature_points;
-    FEFaceValues<dim>   here(mapping, fe, quadrature, flags);
-    FEFaceValues<dim>   there(mapping, fe, quadrature, flags);
-    const double        modulus = material->elastic_modulus();
+    FEFaceValues<dim> here(mapping, fe, quadrature, flags);
+    FEFaceValues<dim> there(mapping, fe, quadrature, flags);
+    double            modulus = 0.;
+    for (const auto &body : parameters.bodies)
+      modulus = std::max(modulus, body.material->elastic_modulus());
     std::vector<double> normal_derivative(2 * n);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -621,12 +658,36 @@ namespace impm
           }
         step.deformation_increment_inverse = invert(dF);
         const auto properties              = point.get_properties();
-        material->update(PulledBackStress<dim>::embed(dF),
-                         read_symmetric(properties,
-                                        P::elastic_left_cauchy_green),
-                         step.update);
+        material_of(properties)
+          .update(PulledBackStress<dim>::embed(dF),
+                  read_symmetric(properties, P::elastic_left_cauchy_green),
+                  step.update);
       }
     return Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1;
+  }
+
+
+
+  template <int dim>
+  std::vector<MaterialPointInfo<dim>>
+  MPMSolver<dim>::point_infos() const
+  {
+    using P = PointProperties<dim>;
+    std::vector<MaterialPointInfo<dim>> infos;
+    infos.reserve(material_points.n_locally_owned_particles());
+    for (const auto &point : material_points)
+      {
+        const auto              properties = point.get_properties();
+        MaterialPointInfo<dim> &info       = infos.emplace_back();
+        info.id                            = point.get_id();
+        for (unsigned int d = 0; d < dim; ++d)
+          info.initial_position[d] = properties[P::initial_position + d];
+        info.body = layout.body == PointLayout::absent ?
+                      0 :
+                      static_cast<unsigned int>(properties[layout.body]);
+        info.mass = properties[P::mass];
+      }
+    return infos;
   }
 
 
@@ -636,20 +697,20 @@ namespace impm
   MPMSolver<dim>::assemble_external_force(const double load_factor)
   {
     TimerOutput::Scope scope(timer, "assembly");
-    using P        = PointProperties<dim>;
     external_force = 0.;
-    if (parameters.gravity.enabled)
+    if (!force_effects.empty())
       {
-        const Tensor<1, dim> g = load_factor * parameters.gravity.acceleration;
-        unsigned int         p = 0;
-        for (const auto &point : material_points)
+        const auto                  infos = point_infos();
+        std::vector<Tensor<1, dim>> forces(infos.size());
+        for (const auto &effect : force_effects)
+          effect->add_forces(infos, load_factor, forces);
+        for (unsigned int p = 0; p < infos.size(); ++p)
           {
-            const PointStep &step = point_steps[p++];
-            const double     mass = point.get_properties()[P::mass];
+            const PointStep &step = point_steps[p];
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               for (unsigned int i = 0; i < dim; ++i)
                 external_force.local_element(step.dofs[v * dim + i]) +=
-                  step.support.weights[v] * mass * g[i];
+                  step.support.weights[v] * forces[p][i];
           }
       }
     external_force.compress(VectorOperation::add);
@@ -737,6 +798,10 @@ namespace impm
           external_force.local_element(i) - internal_force.local_element(i);
     system_rhs.compress(VectorOperation::insert);
     residual_norm = system_rhs.l2_norm();
+    // Without external loads (a prescribed displacement), the residual is
+    // measured against the internal forces, which carry the reactions.
+    if (external_force_norm == 0.)
+      reference_force_norm = internal_force.l2_norm();
   }
 
 
@@ -764,7 +829,7 @@ namespace impm
         const auto       properties = point.get_properties();
         const double     Jn =
           determinant(read_tensor(properties, P::deformation_gradient));
-        material->tangent(step.update, dim, C);
+        material_of(properties).tangent(step.update, dim, C);
         Tensor<4, dim> A;
         double         volume;
         const std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>
@@ -984,7 +1049,9 @@ namespace impm
         write_symmetric(step.update.kirchhoff_stress,
                         properties,
                         P::kirchhoff_stress);
-        properties[P::plastic_multiplier] += step.update.plastic_multiplier;
+        if (layout.plastic_multiplier != PointLayout::absent)
+          properties[layout.plastic_multiplier] +=
+            step.update.plastic_multiplier;
 
         if (update_domains)
           {
@@ -1046,12 +1113,11 @@ namespace impm
   {
     // The paper's eq. 13 with sigma_a = -lambda rho_0 g (l0 - Z).
     using P           = PointProperties<dim>;
-    const auto  &body = parameters.body;
+    const auto  &body = parameters.bodies[0];
     const double height =
       body.upper_corner[dim - 1] - body.lower_corner[dim - 1];
-    const double weight =
-      body.density * std::abs(parameters.gravity.acceleration[dim - 1]);
-    double local[2] = {0., 0.};
+    const double weight = body.density * std::abs(parameters.gravity[dim - 1]);
+    double       local[2] = {0., 0.};
     for (const auto &point : material_points)
       {
         const auto   properties = point.get_properties();
@@ -1083,26 +1149,47 @@ namespace impm
     using P                   = PointProperties<dim>;
     static const char *axis[] = {"x", "y", "z"};
 
+    // The fields the scene asks for, among those its effects produce.
+    const auto &requested = parameters.output.fields;
+    const auto  wanted    = [&](const std::string &field) {
+      return std::find(requested.begin(), requested.end(), "all") !=
+               requested.end() ||
+             std::find(requested.begin(), requested.end(), field) !=
+               requested.end();
+    };
+    const bool displacement = wanted("displacement"),
+               initial = wanted("initial_position"), stress = wanted("stress"),
+               von_mises = wanted("von_mises_stress"),
+               plastic   = wanted("plastic_multiplier") &&
+                         layout.plastic_multiplier != PointLayout::absent,
+               volume = wanted("volume"), rank = wanted("rank"),
+               body = wanted("body") && layout.body != PointLayout::absent;
+
     std::vector<std::string> names;
     std::vector<bool>        is_vector;
-    for (unsigned int d = 0; d < dim; ++d)
+    for (unsigned int d = 0; d < dim && displacement; ++d)
       names.push_back("displacement"), is_vector.push_back(true);
-    for (unsigned int d = 0; d < dim; ++d)
+    for (unsigned int d = 0; d < dim && initial; ++d)
       names.push_back("initial_position"), is_vector.push_back(true);
-    for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int i = 0; i < 3 && stress; ++i)
       for (unsigned int j = i; j < 3; ++j)
         {
           names.push_back(std::string("stress_") + axis[i] + axis[j]);
           is_vector.push_back(false);
         }
-    for (const char *name :
-         {"von_mises_stress", "plastic_multiplier", "volume", "rank"})
-      names.push_back(name), is_vector.push_back(false);
+    for (const auto &[name, on] : std::vector<std::pair<std::string, bool>>{
+           {"von_mises_stress", von_mises},
+           {"plastic_multiplier", plastic},
+           {"volume", volume},
+           {"rank", rank},
+           {"body", body}})
+      if (on)
+        names.push_back(name), is_vector.push_back(false);
 
     point_output.begin(material_points.n_locally_owned_particles(),
                        names,
                        is_vector);
-    const double        rank = Utilities::MPI::this_mpi_process(communicator);
+    const double this_rank = Utilities::MPI::this_mpi_process(communicator);
     std::vector<double> values(names.size());
     unsigned int        p = 0;
     for (const auto &point : material_points)
@@ -1113,19 +1200,27 @@ namespace impm
         const SymmetricTensor<2, 3> sigma =
           read_symmetric(properties, P::kirchhoff_stress) / J;
         unsigned int c = 0;
-        for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int d = 0; d < dim && displacement; ++d)
           values[c++] =
             point.get_location()[d] - properties[P::initial_position + d];
-        for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int d = 0; d < dim && initial; ++d)
           values[c++] = properties[P::initial_position + d];
-        for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int i = 0; i < 3 && stress; ++i)
           for (unsigned int j = i; j < 3; ++j)
             values[c++] = sigma[i][j];
-        const SymmetricTensor<2, 3> s = deviator(sigma);
-        values[c++]                   = std::sqrt(1.5 * (s * s));
-        values[c++]                   = properties[P::plastic_multiplier];
-        values[c++]                   = J * properties[P::initial_volume];
-        values[c++]                   = rank;
+        if (von_mises)
+          {
+            const SymmetricTensor<2, 3> s = deviator(sigma);
+            values[c++]                   = std::sqrt(1.5 * (s * s));
+          }
+        if (plastic)
+          values[c++] = properties[layout.plastic_multiplier];
+        if (volume)
+          values[c++] = J * properties[P::initial_volume];
+        if (rank)
+          values[c++] = this_rank;
+        if (body)
+          values[c++] = properties[layout.body] + 1;
         point_output.set_point(p++, point.get_location(), values);
       }
     point_output.write(load_factor, load_step);
@@ -1139,12 +1234,11 @@ namespace impm
   MPMSolver<dim>::measure_final_state()
   {
     using P           = PointProperties<dim>;
-    const auto  &body = parameters.body;
+    const auto  &body = parameters.bodies[0];
     const double height =
       body.upper_corner[dim - 1] - body.lower_corner[dim - 1];
-    const double weight =
-      body.density * std::abs(parameters.gravity.acceleration[dim - 1]);
-    double mass = 0., tension = -std::numeric_limits<double>::max(),
+    const double weight = body.density * std::abs(parameters.gravity[dim - 1]);
+    double       mass = 0., tension = -std::numeric_limits<double>::max(),
            deviation = 0.;
     Point<dim> initial_min, initial_max, final_min, final_max;
     for (unsigned int d = 0; d < dim; ++d)
@@ -1225,7 +1319,16 @@ namespace impm
          << "  \"dimension\": " << dim << ",\n"
          << "  \"processes\": " << Utilities::MPI::n_mpi_processes(communicator)
          << ",\n"
-         << "  \"material\": \"" << material->description() << "\",\n"
+         << "  \"bodies\": [";
+    for (unsigned int b = 0; b < parameters.bodies.size(); ++b)
+      json << (b ? ", " : "") << '"' << parameters.bodies[b].description()
+           << '"';
+    json << "],\n"
+         << "  \"effects\": [";
+    const auto effects = effect_descriptions();
+    for (unsigned int e = 0; e < effects.size(); ++e)
+      json << (e ? ", " : "") << '"' << effects[e] << '"';
+    json << "],\n"
          << "  \"basis\": \"" << parameters.material_points.basis << "\",\n"
          << "  \"material_points\": " << material_points.n_global_particles()
          << ",\n"
@@ -1323,7 +1426,7 @@ namespace impm
                   final_state.total_mass,
                   initial_mass);
     std::cout << buffer;
-    if (!reaction_columns.empty() && parameters.gravity.enabled)
+    if (!reaction_columns.empty() && !force_effects.empty())
       std::cout << "reactions balance the load to 1e-8 in every step: "
                 << (max_reaction_imbalance < 1e-8 ? "yes" : "NO") << '\n';
     static const char *axis[] = {"x", "y", "z"};
@@ -1399,13 +1502,18 @@ namespace impm
 
   template <int dim>
   typename MPMSolver<dim>::NewtonOutcome
-  MPMSolver<dim>::solve_load_step(const double         load_factor,
+  MPMSolver<dim>::solve_load_step(const double         previous_load_factor,
+                                  const double         load_factor,
                                   const unsigned int   load_step,
                                   std::vector<double> &residuals)
   {
     const bool is_root = Utilities::MPI::this_mpi_process(communicator) == 0;
     residuals.clear();
     increment = 0.;
+    // Prescribed faces move by their share of this step (ghosts included).
+    for (const auto &[dof, displacement] : prescribed_dofs)
+      increment.local_element(dof) =
+        (load_factor - previous_load_factor) * displacement;
     assemble_external_force(load_factor);
     for (unsigned int iteration = 0;; ++iteration)
       {
@@ -1413,7 +1521,9 @@ namespace impm
           return NewtonOutcome::inverted_point;
         assemble_residual();
         const double reference =
-          external_force_norm > 0. ? external_force_norm : 1.;
+          external_force_norm > 0. ?
+            external_force_norm :
+            (reference_force_norm > 0. ? reference_force_norm : 1.);
         residuals.push_back(residual_norm / reference);
         if (is_root)
           newton_file << load_step << ',' << iteration << ','
@@ -1436,6 +1546,40 @@ namespace impm
 
 
   template <int dim>
+  std::vector<std::string>
+  MPMSolver<dim>::effect_descriptions() const
+  {
+    static const char       *faces[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+    std::vector<std::string> list;
+    for (const auto &effect : force_effects)
+      list.push_back(effect->description());
+    for (unsigned int f = 0; f < 2 * dim; ++f)
+      if (parameters.grid.face_conditions[f] != "none")
+        {
+          std::ostringstream text;
+          text << "grid face " << faces[f] << ": "
+               << parameters.grid.face_conditions[f];
+          if (parameters.grid.face_conditions[f].rfind("prescribed", 0) == 0)
+            text << " (" << parameters.grid.face_displacements[f] << ") m";
+          if (parameters.grid.face_has_region[f])
+            text << " in [" << parameters.grid.face_regions[f].first << "] - ["
+                 << parameters.grid.face_regions[f].second << "]";
+          list.push_back(text.str());
+        }
+    if (parameters.stabilisation.enabled)
+      list.push_back("ghost stabilisation: penalty scale " +
+                     std::to_string(parameters.stabilisation.penalty_scale) +
+                     ", fill threshold " +
+                     std::to_string(parameters.stabilisation.fill_threshold));
+    if (basis_type == BasisType::gimp &&
+        parameters.material_points.update_domains)
+      list.push_back("GIMP domain update with the stretch");
+    return list;
+  }
+
+
+
+  template <int dim>
   void
   MPMSolver<dim>::run()
   {
@@ -1450,6 +1594,12 @@ namespace impm
     make_grid();
     setup_dofs();
     create_material_points();
+    if (!force_effects.empty())
+      {
+        const auto infos = point_infos();
+        for (const auto &effect : force_effects)
+          effect->initialize(infos, parameters.bodies, grid, communicator);
+      }
 
     pcout << "Scene '" << parameters.scene.name << "' (" << dim << "D) on "
           << Utilities::MPI::n_mpi_processes(communicator) << " process(es)\n"
@@ -1457,14 +1607,13 @@ namespace impm
           << dof_handler.n_dofs() << " DoFs\n"
           << "  material points: " << material_points.n_global_particles()
           << " (" << parameters.material_points.basis << ")\n"
-          << "  material: " << material->description() << '\n'
-          << "  effects: " << (parameters.gravity.enabled ? "gravity, " : "")
-          << "grid-face constraints"
-          << (parameters.stabilisation.enabled ?
-                ", ghost stabilisation (penalty scale " +
-                  std::to_string(parameters.stabilisation.penalty_scale) + ")" :
-                std::string())
-          << std::endl;
+          << "  bodies:\n";
+    for (const auto &body : parameters.bodies)
+      pcout << "    " << body.description() << '\n';
+    pcout << "  effects:\n";
+    for (const auto &effect : effect_descriptions())
+      pcout << "    " << effect << '\n';
+    pcout << std::flush;
 
     static const char *face_names[] = {
       "xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
@@ -1520,7 +1669,7 @@ namespace impm
             new_state = false;
           }
         NewtonOutcome outcome =
-          solve_load_step(target, load_step + 1, residuals);
+          solve_load_step(start, target, load_step + 1, residuals);
         // A converged step that moves a point by more than the allowed
         // fraction of a cell is cut too: the basis of the step is that of
         // its start, and the load path is followed more closely.
@@ -1651,10 +1800,9 @@ namespace impm
   {
     Parameters::All<dim> parameters;
     parameters.parse_parameters(prm);
-    prm.enter_subsection("Material");
-    std::unique_ptr<Material> material = MaterialRegistry::create(prm);
-    prm.leave_subsection();
-    MPMSolver<dim> solver(parameters, std::move(material), communicator);
+    MPMSolver<dim> solver(parameters,
+                          EffectRegistry::create_enabled<dim>(prm),
+                          communicator);
     solver.run();
   }
 

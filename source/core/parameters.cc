@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <impm/core/effects.h>
 #include <impm/core/parameters.h>
 #include <impm/mechanics/material.h>
 
@@ -94,15 +95,35 @@ namespace impm
                         "Number of cells in each direction (>= 1).");
       const char *faces[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
       for (const char *face : faces)
-        prm.declare_entry(std::string("Condition ") + face,
-                          "none",
-                          Patterns::Selection("none|roller|fixed"),
-                          std::string("Displacement condition on the grid "
-                                      "face ") +
-                            face +
-                            ": none, roller (normal component zero) or "
-                            "fixed (all components zero). z faces are "
-                            "used in 3D only.");
+        {
+          prm.declare_entry(
+            std::string("Condition ") + face,
+            "none",
+            Patterns::Selection(
+              "none|roller|fixed|prescribed|prescribed normal"),
+            std::string("Displacement condition on the grid face ") + face +
+              ": none, roller (normal component zero), fixed (all "
+              "components zero), prescribed (all components follow "
+              "'Displacement " +
+              face +
+              "', ramped over the load steps) or prescribed normal (the "
+              "normal component follows it, the others are free). z faces "
+              "are used in 3D only.");
+          prm.declare_entry(std::string("Displacement ") + face,
+                            "0, 0",
+                            Patterns::List(Patterns::Double(), 2, 3),
+                            std::string("Displacement of the face ") + face +
+                              " at the full load, in m, when its condition "
+                              "is prescribed.");
+          prm.declare_entry(std::string("Region ") + face,
+                            "",
+                            Patterns::List(Patterns::Double(), 0, 6),
+                            std::string("If given (lower corner, then upper "
+                                        "corner), the condition on face ") +
+                              face +
+                              " holds only for its nodes inside this box; "
+                              "empty: the whole face.");
+        }
       prm.leave_subsection();
     }
 
@@ -127,58 +148,34 @@ namespace impm
         }
       const char *faces[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
       for (unsigned int f = 0; f < 2 * dim; ++f)
-        face_conditions[f] = prm.get(std::string("Condition ") + faces[f]);
-      prm.leave_subsection();
-    }
-
-
-
-    template <int dim>
-    void
-    Body<dim>::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Body");
-      prm.declare_entry("Lower corner",
-                        "0, 0",
-                        Patterns::List(Patterns::Double(), 2, 3),
-                        "Lower corner of the box filled with material, in m. "
-                        "Cells whose point positions fall inside are "
-                        "filled.");
-      prm.declare_entry("Upper corner",
-                        "3.125, 50",
-                        Patterns::List(Patterns::Double(), 2, 3),
-                        "Upper corner of the box filled with material, in m.");
-      prm.declare_entry("Points per cell direction",
-                        "2",
-                        Patterns::Integer(1, 10),
-                        "n: each filled cell holds n^dim regularly placed "
-                        "material points (1 to 10).");
-      prm.declare_entry("Density",
-                        "80",
-                        Patterns::Double(0.),
-                        "Initial density rho_0 in kg/m^3 (>= 0).");
-      prm.leave_subsection();
-    }
-
-    template <int dim>
-    void
-    Body<dim>::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Body");
-      const auto lower = get_vector(prm, "Body", "Lower corner", dim);
-      const auto upper = get_vector(prm, "Body", "Upper corner", dim);
-      for (unsigned int d = 0; d < dim; ++d)
         {
-          lower_corner[d] = lower[d];
-          upper_corner[d] = upper[d];
-          if (!(upper[d] > lower[d]))
-            bad_value("Body/Upper corner",
-                      prm.get("Upper corner"),
-                      "each coordinate must exceed that of 'Lower corner' (" +
-                        prm.get("Lower corner") + ").");
+          face_conditions[f]    = prm.get(std::string("Condition ") + faces[f]);
+          face_displacements[f] = 0;
+          if (face_conditions[f].rfind("prescribed", 0) == 0)
+            {
+              const auto u = get_vector(prm,
+                                        "Grid",
+                                        std::string("Displacement ") + faces[f],
+                                        dim);
+              for (unsigned int d = 0; d < dim; ++d)
+                face_displacements[f][d] = u[d];
+            }
+          const std::string region_entry = std::string("Region ") + faces[f];
+          const auto        region       = Utilities::string_to_double(
+            Utilities::split_string_list(prm.get(region_entry)));
+          face_has_region[f] = !region.empty();
+          if (!region.empty() && region.size() != 2 * dim)
+            bad_value("Grid/" + region_entry,
+                      prm.get(region_entry),
+                      "it needs " + std::to_string(2 * dim) +
+                        " numbers (lower corner, then upper corner) or "
+                        "none.");
+          for (unsigned int d = 0; d < dim && face_has_region[f]; ++d)
+            {
+              face_regions[f].first[d]  = region[d];
+              face_regions[f].second[d] = region[dim + d];
+            }
         }
-      points_per_direction = prm.get_integer("Points per cell direction");
-      density              = prm.get_double("Density");
       prm.leave_subsection();
     }
 
@@ -208,37 +205,6 @@ namespace impm
       prm.enter_subsection("Material points");
       basis          = prm.get("Basis");
       update_domains = prm.get_bool("Update domains");
-      prm.leave_subsection();
-    }
-
-
-
-    template <int dim>
-    void
-    Gravity<dim>::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Gravity");
-      prm.declare_entry("Enabled",
-                        "true",
-                        Patterns::Bool(),
-                        "Whether the body force of the points' masses acts.");
-      prm.declare_entry("Acceleration",
-                        "0, -10",
-                        Patterns::List(Patterns::Double(), 2, 3),
-                        "Gravitational acceleration in m/s^2, one component "
-                        "per dimension; applied in equal load steps.");
-      prm.leave_subsection();
-    }
-
-    template <int dim>
-    void
-    Gravity<dim>::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Gravity");
-      enabled      = prm.get_bool("Enabled");
-      const auto g = get_vector(prm, "Gravity", "Acceleration", dim);
-      for (unsigned int d = 0; d < dim; ++d)
-        acceleration[d] = g[d];
       prm.leave_subsection();
     }
 
@@ -405,6 +371,17 @@ namespace impm
                         "sigma_yy = -rho_0 g (l0 - Y) (the paper's eq. 12), "
                         "whose error (eq. 13) goes to steps.csv and "
                         "summary.json.");
+      prm.declare_entry(
+        "Fields",
+        "all",
+        Patterns::MultipleSelection("all|displacement|initial_position|"
+                                    "stress|von_mises_stress|"
+                                    "plastic_multiplier|volume|rank|body"),
+        "Point data written to the point files: all (every field the "
+        "scene's effects produce) or a list of displacement, "
+        "initial_position, stress (all six components), von_mises_stress, "
+        "plastic_multiplier (plastic materials only), volume, rank, body "
+        "(scenes with several bodies only).");
       prm.leave_subsection();
     }
 
@@ -414,6 +391,7 @@ namespace impm
       prm.enter_subsection("Output");
       interval            = prm.get_integer("Interval");
       analytical_solution = prm.get("Analytical solution");
+      fields              = Utilities::split_string_list(prm.get("Fields"));
       prm.leave_subsection();
     }
 
@@ -470,9 +448,17 @@ namespace impm
     {
       scene.parse_parameters(prm);
       grid.parse_parameters(prm);
-      body.parse_parameters(prm);
+      const unsigned int n_bodies = prm.get_integer("Number of bodies");
+      bodies.resize(n_bodies);
+      for (unsigned int k = 0; k < n_bodies; ++k)
+        bodies[k].parse_parameters(prm, k + 1);
       material_points.parse_parameters(prm);
-      gravity.parse_parameters(prm);
+      prm.enter_subsection("Gravity");
+      gravity_enabled = prm.get_bool("Enabled");
+      const auto g    = get_vector(prm, "Gravity", "Acceleration", dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        gravity[d] = g[d];
+      prm.leave_subsection();
       solver.parse_parameters(prm);
       stabilisation.parse_parameters(prm);
       output.parse_parameters(prm);
@@ -486,12 +472,14 @@ namespace impm
     {
       Scene::declare_parameters(prm);
       Grid<2>::declare_parameters(prm);
-      Body<2>::declare_parameters(prm);
-      prm.enter_subsection("Material");
-      MaterialRegistry::declare_parameters(prm);
-      prm.leave_subsection();
+      prm.declare_entry("Number of bodies",
+                        "1",
+                        Patterns::Integer(1, impm::Body<2>::max_bodies),
+                        "How many of the subsections Body 1 ... Body 4 the "
+                        "scene uses (1 to 4).");
+      impm::Body<2>::declare_parameters(prm);
       MaterialPoints::declare_parameters(prm);
-      Gravity<2>::declare_parameters(prm);
+      EffectRegistry::declare_parameters(prm);
       Solver::declare_parameters(prm);
       Stabilisation::declare_parameters(prm);
       Output::declare_parameters(prm);
@@ -502,10 +490,6 @@ namespace impm
 
     template struct Grid<2>;
     template struct Grid<3>;
-    template struct Body<2>;
-    template struct Body<3>;
-    template struct Gravity<2>;
-    template struct Gravity<3>;
     template struct All<2>;
     template struct All<3>;
   } // namespace Parameters

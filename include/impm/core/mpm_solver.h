@@ -21,6 +21,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <impm/basis/basis_functions.h>
+#include <impm/core/effects.h>
 #include <impm/core/parameters.h>
 #include <impm/core/point_properties.h>
 #include <impm/io/point_output.h>
@@ -53,13 +54,13 @@ namespace impm
   public:
     /**
      * @brief Set up the solver for a scene.
-     * @param parameters The scene.
-     * @param material The constitutive model.
+     * @param parameters The scene (with its bodies and their materials).
+     * @param force_effects The loads the scene enables.
      * @param communicator The processes that share the work.
      */
-    MPMSolver(const Parameters::All<dim> &parameters,
-              std::unique_ptr<Material>   material,
-              const MPI_Comm              communicator);
+    MPMSolver(const Parameters::All<dim>                    &parameters,
+              std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects,
+              const MPI_Comm                                 communicator);
 
     /**
      * @brief Run all load steps, write output and the summary.
@@ -116,9 +117,12 @@ namespace impm
     void
     setup_ghost_penalty(const std::vector<bool> &touched);
     NewtonOutcome
-    solve_load_step(const double         load_factor,
+    solve_load_step(const double         previous_load_factor,
+                    const double         load_factor,
                     const unsigned int   load_step,
                     std::vector<double> &residuals);
+    std::vector<MaterialPointInfo<dim>>
+    point_infos() const;
     bool
     update_stresses();
     void
@@ -139,6 +143,8 @@ namespace impm
     column_error(const double load_factor) const;
     void
     write_points(const double load_factor, const unsigned int load_step);
+    std::vector<std::string>
+    effect_descriptions() const;
     void
     measure_final_state();
     void
@@ -146,11 +152,24 @@ namespace impm
     void
     print_test_summary();
 
-    const Parameters::All<dim>     &parameters;
-    const std::unique_ptr<Material> material;
-    const MPI_Comm                  communicator;
-    ConditionalOStream              pcout;
-    TimerOutput                     timer;
+    const Parameters::All<dim>                          &parameters;
+    const std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects;
+    /** The optional point properties of this scene. */
+    PointLayout layout;
+
+    /** The material of a point (from its body index, if several). */
+    const Material &
+    material_of(const ArrayView<const double> &properties) const
+    {
+      return *parameters
+                .bodies[layout.body == PointLayout::absent ?
+                          0 :
+                          static_cast<unsigned int>(properties[layout.body])]
+                .material;
+    }
+    const MPI_Comm     communicator;
+    ConditionalOStream pcout;
+    TimerOutput        timer;
 
     parallel::distributed::Triangulation<dim> triangulation;
     const MappingQ1<dim>                      mapping;
@@ -181,8 +200,11 @@ namespace impm
     TrilinosWrappers::MPI::Vector        system_rhs;
     TrilinosWrappers::MPI::Vector        system_solution;
 
-    double residual_norm       = 0.;
-    double external_force_norm = 0.;
+    double residual_norm        = 0.;
+    double external_force_norm  = 0.;
+    double reference_force_norm = 0.;
+    /** Prescribed DoFs (local index) and their displacement at full load. */
+    std::vector<std::pair<unsigned int, double>> prescribed_dofs;
 
     /** Ghost stabilisation faces of the current load step. */
     std::vector<FacePenalty> ghost_faces;

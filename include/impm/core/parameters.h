@@ -4,6 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <impm/core/body.h>
+
 #include <array>
 #include <string>
 #include <vector>
@@ -60,32 +62,19 @@ namespace impm
       std::array<unsigned int, dim> n_cells;
       /**
        * Condition on each face, in the order x-, x+, y-, y+ (, z-, z+):
-       * "none", "roller" (normal displacement zero) or "fixed".
+       * "none", "roller" (normal displacement zero), "fixed", "prescribed"
+       * (all components follow face_displacements) or "prescribed normal"
+       * (the normal component follows it, the others are free).
        */
       std::array<std::string, 2 * dim> face_conditions;
+      /** Displacement of prescribed faces at the full load (ramped). */
+      std::array<Tensor<1, dim>, 2 * dim> face_displacements;
+      /** Whether a face's condition is limited to a box of it. */
+      std::array<bool, 2 * dim> face_has_region;
+      /** That box, lower and upper corner. */
+      std::array<std::pair<Point<dim>, Point<dim>>, 2 * dim> face_regions;
 
       /** @brief Declare the entries in subsection "Grid". */
-      static void
-      declare_parameters(ParameterHandler &prm);
-      /** @brief Read them. */
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** @brief A body: a box filled with material points. */
-    template <int dim>
-    struct Body
-    {
-      /** Lower corner of the box. */
-      Point<dim> lower_corner;
-      /** Upper corner of the box. */
-      Point<dim> upper_corner;
-      /** Points per cell and direction (n gives n^dim points per cell). */
-      unsigned int points_per_direction;
-      /** Initial density in kg/m^3. */
-      double density;
-
-      /** @brief Declare the entries in subsection "Body". */
       static void
       declare_parameters(ParameterHandler &prm);
       /** @brief Read them. */
@@ -102,23 +91,6 @@ namespace impm
       bool update_domains;
 
       /** @brief Declare the entries in subsection "Material points". */
-      static void
-      declare_parameters(ParameterHandler &prm);
-      /** @brief Read them. */
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** @brief The body force effect. */
-    template <int dim>
-    struct Gravity
-    {
-      /** Whether the scene applies gravity. */
-      bool enabled;
-      /** Acceleration in m/s^2, reached at the last load step. */
-      Tensor<1, dim> acceleration;
-
-      /** @brief Declare the entries in subsection "Gravity". */
       static void
       declare_parameters(ParameterHandler &prm);
       /** @brief Read them. */
@@ -193,6 +165,8 @@ namespace impm
       unsigned int interval;
       /** Compare with this analytical solution ("none", "column"). */
       std::string analytical_solution;
+      /** Fields written to the point files ("all" or a list). */
+      std::vector<std::string> fields;
 
       /** @brief Declare the entries in subsection "Output". */
       static void
@@ -231,12 +205,15 @@ namespace impm
       Scene scene;
       /** Grid. */
       Grid<dim> grid;
-      /** Body. */
-      Body<dim> body;
+      /** The bodies (Body 1 ... Body n). */
+      std::vector<impm::Body<dim>> bodies;
       /** Material points. */
       MaterialPoints material_points;
-      /** Gravity. */
-      Gravity<dim> gravity;
+      /** Whether gravity acts, and its acceleration (the Gravity effect's
+       * parameters, read here for the analytical solution). */
+      bool gravity_enabled;
+      /** Gravitational acceleration. */
+      Tensor<1, dim> gravity;
       /** Solver. */
       Solver solver;
       /** Ghost stabilisation. */

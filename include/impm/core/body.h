@@ -1,0 +1,81 @@
+#ifndef impm_core_body_h
+#define impm_core_body_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <impm/mechanics/material.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief A body: a region of the scene filled with material points, with
+   * its own points per cell, density and material.
+   *
+   * Shapes: box (2D and 3D), disc (2D), sphere (3D) and polygon (2D, given
+   * by its vertices in order). Points are placed at n regular positions per
+   * cell and direction wherever those positions lie inside the shape.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class Body
+  {
+  public:
+    /** Largest number of bodies a scene can name. */
+    static constexpr unsigned int max_bodies = 4;
+
+    /**
+     * @brief Declare the entries of subsection "Body k" (k = 1 ... 4): shape,
+     * geometry, points per cell, density and a "Material" subsection with
+     * the registered material models.
+     */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * @brief Read body @p number (1-based) from subsection "Body number".
+     */
+    void
+    parse_parameters(ParameterHandler &prm, const unsigned int number);
+
+    /**
+     * @brief Whether @p x lies inside the body's shape.
+     */
+    bool
+    contains(const Point<dim> &x) const;
+
+    /**
+     * @brief A one-line description for the start-up report and summary.
+     */
+    std::string
+    description() const;
+
+    /** Name used in messages ("Body 1", ...). */
+    std::string name;
+    /** "box", "disc", "sphere" or "polygon". */
+    std::string shape;
+    /** Box corners. */
+    Point<dim> lower_corner, upper_corner;
+    /** Disc or sphere centre. */
+    Point<dim> center;
+    /** Disc or sphere radius. */
+    double radius = 0.;
+    /** Polygon vertices (2D). */
+    std::vector<Point<dim>> vertices;
+    /** Points per cell and direction. */
+    unsigned int points_per_direction = 2;
+    /** Initial density. */
+    double density = 0.;
+    /** The body's constitutive model. */
+    std::shared_ptr<Material> material;
+  };
+} // namespace impm
+
+#endif

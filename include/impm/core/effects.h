@@ -1,0 +1,162 @@
+#ifndef impm_core_effects_h
+#define impm_core_effects_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <impm/basis/basis_functions.h>
+#include <impm/core/body.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief What a force effect may know of a material point.
+   */
+  template <int dim>
+  struct MaterialPointInfo
+  {
+    /** Global id. */
+    std::uint64_t id;
+    /** Initial position X. */
+    Point<dim> initial_position;
+    /** Index of the point's body (0-based). */
+    unsigned int body;
+    /** Mass. */
+    double mass;
+  };
+
+  /**
+   * @brief A physical effect that loads the material points: gravity, point
+   * loads, tractions. Each is a class with its own parameter subsection,
+   * registered by name; a scene switches it on with `Enabled = true` in that
+   * subsection, and an effect that is off is never created, so it costs
+   * nothing.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class ForceEffect
+  {
+  public:
+    /** Destructor. */
+    virtual ~ForceEffect() = default;
+
+    /**
+     * @brief Called once, on every process, after the points exist.
+     * @param points This process's points.
+     * @param bodies The scene's bodies.
+     * @param grid The background grid.
+     * @param communicator The processes of the run.
+     */
+    virtual void
+    initialize(const std::vector<MaterialPointInfo<dim>> &points,
+               const std::vector<Body<dim>>              &bodies,
+               const CartesianGrid<dim>                  &grid,
+               const MPI_Comm                             communicator);
+
+    /**
+     * @brief Add this effect's force on each point at @p load_factor (the
+     * force reached at load factor 1, scaled linearly).
+     * @param points This process's points, in the solver's order.
+     * @param load_factor Between 0 and 1.
+     * @param[in,out] forces One force per point, to add to.
+     */
+    virtual void
+    add_forces(const std::vector<MaterialPointInfo<dim>> &points,
+               const double                               load_factor,
+               std::vector<Tensor<1, dim>>               &forces) const = 0;
+
+    /**
+     * @brief A one-line description with the parameters.
+     */
+    virtual std::string
+    description() const = 0;
+  };
+
+  /**
+   * @brief The registry of force effects by name (ASPECT's plugin pattern):
+   * each effect registers its subsection name, a function that declares its
+   * parameters and one that creates it.
+   */
+  namespace EffectRegistry
+  {
+    /** @brief One registered effect. */
+    template <int dim>
+    struct Entry
+    {
+      /** Name of the effect and of its subsection. */
+      std::string name;
+      /** Default of its `Enabled` entry. */
+      bool enabled_by_default;
+      /** Declares its parameters (inside its subsection). */
+      std::function<void(ParameterHandler &)> declare_parameters;
+      /** Creates it from its parsed parameters (same subsection). */
+      std::function<std::unique_ptr<ForceEffect<dim>>(ParameterHandler &)>
+        create;
+    };
+
+    /** @brief Register an effect; returns true (for a static initialiser). */
+    template <int dim>
+    bool
+    register_effect(const Entry<dim> &entry);
+
+    /** @brief All registered effects. */
+    template <int dim>
+    const std::vector<Entry<dim>> &
+    entries();
+
+    /**
+     * @brief Declare one subsection per registered effect, each with
+     * `Enabled` and the effect's own entries.
+     */
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * @brief Create the effects the scene enables, in registration order.
+     */
+    template <int dim>
+    std::vector<std::unique_ptr<ForceEffect<dim>>>
+    create_enabled(ParameterHandler &prm);
+  } // namespace EffectRegistry
+} // namespace impm
+
+/**
+ * Register force effect CLASS (a class template over dim) under NAME, enabled
+ * by default or not: the one line an effect needs besides its class.
+ */
+#define IMPM_REGISTER_FORCE_EFFECT(CLASS, NAME, ENABLED) \
+  namespace                                              \
+  {                                                      \
+    const bool CLASS##_registered_2 =                    \
+      impm::EffectRegistry::register_effect<2>(          \
+        {NAME,                                           \
+         ENABLED,                                        \
+         &CLASS<2>::declare_parameters,                  \
+         [](dealii::ParameterHandler &prm)               \
+           -> std::unique_ptr<impm::ForceEffect<2>> {    \
+           return std::make_unique<CLASS<2>>(prm);       \
+         }});                                            \
+    const bool CLASS##_registered_3 =                    \
+      impm::EffectRegistry::register_effect<3>(          \
+        {NAME,                                           \
+         ENABLED,                                        \
+         &CLASS<3>::declare_parameters,                  \
+         [](dealii::ParameterHandler &prm)               \
+           -> std::unique_ptr<impm::ForceEffect<3>> {    \
+           return std::make_unique<CLASS<3>>(prm);       \
+         }});                                            \
+  }
+
+#endif

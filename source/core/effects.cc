@@ -1,0 +1,431 @@
+#include <deal.II/base/mpi.templates.h>
+#include <deal.II/base/utilities.h>
+
+#include <impm/core/effects.h>
+#include <impm/core/parameters.h>
+
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace impm
+{
+  template <int dim>
+  void
+  ForceEffect<dim>::initialize(const std::vector<MaterialPointInfo<dim>> &,
+                               const std::vector<Body<dim>> &,
+                               const CartesianGrid<dim> &,
+                               const MPI_Comm)
+  {}
+
+
+
+  namespace EffectRegistry
+  {
+    namespace
+    {
+      template <int dim>
+      std::vector<Entry<dim>> &
+      registry()
+      {
+        static std::vector<Entry<dim>> list;
+        return list;
+      }
+    } // namespace
+
+    template <int dim>
+    bool
+    register_effect(const Entry<dim> &entry)
+    {
+      registry<dim>().push_back(entry);
+      return true;
+    }
+
+    template <int dim>
+    const std::vector<Entry<dim>> &
+    entries()
+    {
+      return registry<dim>();
+    }
+
+    void
+    declare_parameters(ParameterHandler &prm)
+    {
+      for (const auto &entry : entries<2>())
+        {
+          prm.enter_subsection(entry.name);
+          prm.declare_entry("Enabled",
+                            entry.enabled_by_default ? "true" : "false",
+                            Patterns::Bool(),
+                            "Whether the scene applies this effect. An "
+                            "effect that is off is not created and costs "
+                            "nothing.");
+          entry.declare_parameters(prm);
+          prm.leave_subsection();
+        }
+    }
+
+    template <int dim>
+    std::vector<std::unique_ptr<ForceEffect<dim>>>
+    create_enabled(ParameterHandler &prm)
+    {
+      std::vector<std::unique_ptr<ForceEffect<dim>>> effects;
+      for (const auto &entry : entries<dim>())
+        {
+          prm.enter_subsection(entry.name);
+          if (prm.get_bool("Enabled"))
+            effects.push_back(entry.create(prm));
+          prm.leave_subsection();
+        }
+      return effects;
+    }
+  } // namespace EffectRegistry
+
+
+
+  namespace
+  {
+    /** Format a tensor as "a, b(, c)". */
+    template <int dim>
+    std::string
+    to_string(const Tensor<1, dim> &t)
+    {
+      std::ostringstream out;
+      for (unsigned int d = 0; d < dim; ++d)
+        out << (d ? ", " : "") << t[d];
+      return out.str();
+    }
+
+    template <int dim>
+    Tensor<1, dim>
+    get_tensor(ParameterHandler  &prm,
+               const std::string &section,
+               const std::string &entry)
+    {
+      const auto     values = Parameters::get_vector(prm, section, entry, dim);
+      Tensor<1, dim> t;
+      for (unsigned int d = 0; d < dim; ++d)
+        t[d] = values[d];
+      return t;
+    }
+
+
+
+    /**
+     * @brief The body force of the points' masses, m g, in equal load steps.
+     */
+    template <int dim>
+    class Gravity : public ForceEffect<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.declare_entry("Acceleration",
+                          "0, -10",
+                          Patterns::List(Patterns::Double(), 2, 3),
+                          "Gravitational acceleration in m/s^2, one "
+                          "component per dimension.");
+      }
+
+      explicit Gravity(ParameterHandler &prm)
+        : acceleration(get_tensor<dim>(prm, "Gravity", "Acceleration"))
+      {}
+
+      void
+      add_forces(const std::vector<MaterialPointInfo<dim>> &points,
+                 const double                               load_factor,
+                 std::vector<Tensor<1, dim>> &forces) const override
+      {
+        for (unsigned int p = 0; p < points.size(); ++p)
+          forces[p] += (load_factor * points[p].mass) * acceleration;
+      }
+
+      std::string
+      description() const override
+      {
+        return "gravity: acceleration (" + to_string(acceleration) + ") m/s^2";
+      }
+
+    private:
+      const Tensor<1, dim> acceleration;
+    };
+
+
+
+    /**
+     * @brief Forces on the points nearest to given positions.
+     */
+    template <int dim>
+    class PointLoad : public ForceEffect<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.declare_entry("Positions",
+                          "0, 0",
+                          Patterns::Anything(),
+                          "Where the loads act: 'x, y; x, y; ...'. Each "
+                          "load acts on the material point nearest to its "
+                          "position at the start.");
+        prm.declare_entry("Force",
+                          "0, 0",
+                          Patterns::List(Patterns::Double(), 2, 3),
+                          "The force of each load in N (per unit thickness "
+                          "in 2D) at the full load, one component per "
+                          "dimension.");
+      }
+
+      explicit PointLoad(ParameterHandler &prm)
+        : force(get_tensor<dim>(prm, "Point load", "Force"))
+      {
+        for (const auto &position :
+             Utilities::split_string_list(prm.get("Positions"), ';'))
+          {
+            const auto xyz = Utilities::string_to_double(
+              Utilities::split_string_list(position));
+            if (xyz.size() != dim)
+              throw std::invalid_argument(
+                "Parameter 'Point load/Positions' = '" + prm.get("Positions") +
+                "' is not allowed: each position "
+                "needs " +
+                std::to_string(dim) + " coordinates.");
+            Point<dim> p;
+            for (unsigned int d = 0; d < dim; ++d)
+              p[d] = xyz[d];
+            positions.push_back(p);
+          }
+      }
+
+      void
+      initialize(const std::vector<MaterialPointInfo<dim>> &points,
+                 const std::vector<Body<dim>> &,
+                 const CartesianGrid<dim> &,
+                 const MPI_Comm communicator) override
+      {
+        loaded_ids.clear();
+        for (const auto &position : positions)
+          {
+            std::pair<double, std::uint64_t> nearest(
+              std::numeric_limits<double>::max(), 0);
+            for (const auto &point : points)
+              nearest = std::min(nearest,
+                                 std::make_pair(point.initial_position.distance(
+                                                  position),
+                                                point.id));
+            const auto all = Utilities::MPI::all_gather(communicator, nearest);
+            loaded_ids.push_back(
+              std::min_element(all.begin(), all.end())->second);
+          }
+      }
+
+      void
+      add_forces(const std::vector<MaterialPointInfo<dim>> &points,
+                 const double                               load_factor,
+                 std::vector<Tensor<1, dim>> &forces) const override
+      {
+        for (unsigned int p = 0; p < points.size(); ++p)
+          for (const auto id : loaded_ids)
+            if (points[p].id == id)
+              forces[p] += load_factor * force;
+      }
+
+      std::string
+      description() const override
+      {
+        std::ostringstream out;
+        out << "point load: (" << to_string(force) << ") N at";
+        for (unsigned int i = 0; i < positions.size(); ++i)
+          out << " (" << positions[i] << ")"
+              << (loaded_ids.size() > i ?
+                    " -> point " + std::to_string(loaded_ids[i]) :
+                    std::string());
+        return out.str();
+      }
+
+    private:
+      const Tensor<1, dim>       force;
+      std::vector<Point<dim>>    positions;
+      std::vector<std::uint64_t> loaded_ids;
+    };
+
+
+
+    /**
+     * @brief A traction (force per unit initial area) on one side of a
+     * body's boundary, optionally within a box. The boundary points are
+     * found once, from the points' lattice: a point is on the boundary in
+     * direction +-e_d when its neighbouring lattice site in that direction
+     * lies outside the body.
+     */
+    template <int dim>
+    class Traction : public ForceEffect<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.declare_entry("Body",
+                          "1",
+                          Patterns::Integer(1, Body<dim>::max_bodies),
+                          "The body whose boundary is loaded (1 to 4).");
+        prm.declare_entry("Boundary",
+                          "y+",
+                          Patterns::Selection("x-|x+|y-|y+|z-|z+"),
+                          "The side of the body's boundary that is loaded, "
+                          "by its outward normal: x-, x+, y-, y+ (, z-, z+).");
+        prm.declare_entry("Region lower corner",
+                          "",
+                          Patterns::List(Patterns::Double(), 0, 3),
+                          "If given, only points initially inside this box "
+                          "are loaded (empty: the whole side).");
+        prm.declare_entry("Region upper corner",
+                          "",
+                          Patterns::List(Patterns::Double(), 0, 3),
+                          "Upper corner of that box.");
+        prm.declare_entry("Traction",
+                          "0, 0",
+                          Patterns::List(Patterns::Double(), 2, 3),
+                          "Traction in Pa (force per unit initial area) at "
+                          "the full load, one component per dimension.");
+      }
+
+      explicit Traction(ParameterHandler &prm)
+        : body(prm.get_integer("Body") - 1)
+        , boundary(prm.get("Boundary"))
+        , traction(get_tensor<dim>(prm, "Traction", "Traction"))
+      {
+        const auto lower = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Region lower corner")));
+        const auto upper = Utilities::string_to_double(
+          Utilities::split_string_list(prm.get("Region upper corner")));
+        if (lower.size() != upper.size() ||
+            (!lower.empty() && lower.size() != dim))
+          throw std::invalid_argument(
+            "Parameters 'Traction/Region lower corner' = '" +
+            prm.get("Region lower corner") + "' and 'Region upper corner' = '" +
+            prm.get("Region upper corner") +
+            "' are not allowed: give both with one coordinate per dimension, "
+            "or neither.");
+        for (unsigned int d = 0; d < lower.size(); ++d)
+          {
+            region_lower[d] = lower[d];
+            region_upper[d] = upper[d];
+          }
+        has_region                   = !lower.empty();
+        const unsigned int direction = boundary[0] - 'x';
+        if (direction >= dim)
+          throw std::invalid_argument("Parameter 'Traction/Boundary' = '" +
+                                      boundary + "' is not allowed in " +
+                                      std::to_string(dim) + "D.");
+      }
+
+      void
+      initialize(const std::vector<MaterialPointInfo<dim>> &points,
+                 const std::vector<Body<dim>>              &bodies,
+                 const CartesianGrid<dim>                  &grid,
+                 const MPI_Comm communicator) override
+      {
+        if (body >= bodies.size())
+          throw std::invalid_argument(
+            "Parameter 'Traction/Body' = " + std::to_string(body + 1) +
+            " is not allowed: the scene has " + std::to_string(bodies.size()) +
+            " bodies.");
+        const unsigned int direction = boundary[0] - 'x';
+        const double       sign      = boundary[1] == '+' ? 1. : -1.;
+        Tensor<1, dim>     spacing;
+        for (unsigned int d = 0; d < dim; ++d)
+          spacing[d] = grid.cell_size[d] / bodies[body].points_per_direction;
+        double area = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (d != direction)
+            area *= spacing[d];
+
+        areas.clear();
+        for (const auto &point : points)
+          {
+            if (point.body != body)
+              continue;
+            Point<dim> neighbour = point.initial_position;
+            neighbour[direction] += sign * spacing[direction];
+            if (bodies[body].contains(neighbour) && grid.contains(neighbour))
+              continue;
+            bool inside = true;
+            if (has_region)
+              for (unsigned int d = 0; d < dim; ++d)
+                inside = inside &&
+                         point.initial_position[d] >= region_lower[d] &&
+                         point.initial_position[d] <= region_upper[d];
+            if (inside)
+              areas[point.id] = area;
+          }
+        n_points = Utilities::MPI::sum(areas.size(), communicator);
+        if (n_points == 0)
+          throw std::invalid_argument(
+            "Traction: no material point of Body " + std::to_string(body + 1) +
+            " lies on its " + boundary + " boundary" +
+            (has_region ? " inside the region" : "") + ".");
+        total_area = Utilities::MPI::sum(areas.size() * area, communicator);
+      }
+
+      void
+      add_forces(const std::vector<MaterialPointInfo<dim>> &points,
+                 const double                               load_factor,
+                 std::vector<Tensor<1, dim>> &forces) const override
+      {
+        for (unsigned int p = 0; p < points.size(); ++p)
+          {
+            const auto area = areas.find(points[p].id);
+            if (area != areas.end())
+              forces[p] += (load_factor * area->second) * traction;
+          }
+      }
+
+      std::string
+      description() const override
+      {
+        std::ostringstream out;
+        out << "traction: (" << to_string(traction) << ") Pa on the "
+            << boundary << " side of Body " << body + 1;
+        if (n_points > 0)
+          out << " (" << n_points << " points, area " << total_area << ")";
+        return out.str();
+      }
+
+    private:
+      const unsigned int                        body;
+      const std::string                         boundary;
+      const Tensor<1, dim>                      traction;
+      Point<dim>                                region_lower;
+      Point<dim>                                region_upper;
+      bool                                      has_region = false;
+      std::unordered_map<std::uint64_t, double> areas;
+      unsigned int                              n_points   = 0;
+      double                                    total_area = 0.;
+    };
+  } // namespace
+
+  IMPM_REGISTER_FORCE_EFFECT(Gravity, "Gravity", true)
+  IMPM_REGISTER_FORCE_EFFECT(PointLoad, "Point load", false)
+  IMPM_REGISTER_FORCE_EFFECT(Traction, "Traction", false)
+
+  template class ForceEffect<2>;
+  template class ForceEffect<3>;
+  namespace EffectRegistry
+  {
+    template bool
+    register_effect<2>(const Entry<2> &);
+    template bool
+    register_effect<3>(const Entry<3> &);
+    template const std::vector<Entry<2>> &
+    entries<2>();
+    template const std::vector<Entry<3>> &
+    entries<3>();
+    template std::vector<std::unique_ptr<ForceEffect<2>>>
+    create_enabled<2>(ParameterHandler &);
+    template std::vector<std::unique_ptr<ForceEffect<3>>>
+    create_enabled<3>(ParameterHandler &);
+  } // namespace EffectRegistry
+} // namespace impm
