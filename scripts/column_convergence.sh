@@ -20,8 +20,8 @@ for basis in "GIMP" "standard MPM"; do
       width=$(awk "BEGIN{print 50/$c}")
       "$impm" "$scene" --set "Grid/Number of cells=1, $c" \
         --set "Grid/Upper corner=$width, 50" \
-        --set "Body/Upper corner=$width, 50" \
-        --set "Body/Points per cell direction=$n" \
+        --set "Body 1/Upper corner=$width, 50" \
+        --set "Body 1/Points per cell direction=$n" \
         --set "Material points/Basis=$basis" \
         --set "Output/Interval=0" > log.txt
       error=$(sed -n 's/.*"error_sigma_zz": \([^,]*\),/\1/p' output/summary.json)

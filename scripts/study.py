@@ -15,7 +15,10 @@ and, for the column scene, with the convenience
   --column-cells 4,8,16                   (N cells of width 50/N: sets
                                            Grid/Number of cells=1, N,
                                            Grid/Upper corner=50/N, 50 and
-                                           Body/Upper corner=50/N, 50).
+                                           Body 1/Upper corner=50/N, 50;
+                                           'Body' for scenes of the older
+                                           format with one unnumbered body).
+A --set of 'Body/Entry' on a scene with numbered bodies means 'Body 1/Entry'.
 
 The error column:
   * `error_sigma_zz` of summary.json (eq. 13 of the paper) when the run has it
@@ -39,7 +42,9 @@ Other options:
                    runs; counts (Newton iterations, ...) must agree between
                    repetitions (a warning is printed if not).
   --keep DIR       keep the output directory of every case's first repetition
-                   as DIR/<case label>/ (with impm's stdout.txt and stderr.txt).
+                   as DIR/<case label>/ (with impm's stdout.txt and stderr.txt,
+                   and study_case.json: the --set values, h and the points per
+                   cell direction of the case).
   --points-out F   run with the Testing printout of every point
                    (Testing/Enabled=true, Testing/Printed points=100000) and
                    write all final points of all cases to the CSV file F
@@ -135,6 +140,21 @@ def read_prm(path):
             if m:
                 values["/".join(stack + [m.group(1).strip()])] = m.group(2).strip()
     return values
+
+
+def body_section(base):
+    """'Body 1' for scenes with numbered bodies, else 'Body'."""
+    if any(k.startswith("Body/") for k in base):
+        return "Body"
+    return "Body 1"
+
+
+def translate(name, base):
+    """Accept 'Body/Entry' for the first body of a scene with numbered bodies
+    ('Body 1/Entry'), so that older commands keep working."""
+    if name.startswith("Body/") and body_section(base) == "Body 1":
+        return "Body 1/" + name[len("Body/"):]
+    return name
 
 
 def numbers(text):
@@ -257,12 +277,16 @@ def main():
     if args.repeat < 1:
         raise SystemExit("study.py: --repeat must be >= 1")
 
+    base = read_prm(scene)
+    body = body_section(base)
+
     # Factors of the cartesian product: each is a list of names and a list of
     # value tuples (one tuple per level).
     factors = []
     fixed = []
     for spec in args.set:
         name, values = parse_spec(spec)
+        name = translate(name, base)
         if len(values) == 1:
             fixed.append((name, values[0]))
         else:
@@ -274,16 +298,15 @@ def main():
         groups.append([
             "Grid/Number of cells=" + "|".join(f"1, {c}" for c in cells),
             "Grid/Upper corner=" + "|".join(f"{w}, 50" for w in widths),
-            "Body/Upper corner=" + "|".join(f"{w}, 50" for w in widths),
+            f"{body}/Upper corner=" + "|".join(f"{w}, 50" for w in widths),
         ])
     for group in groups:
-        parsed = [parse_spec(s) for s in group]
+        parsed = [(translate(n, base), v) for n, v in (parse_spec(s) for s in group)]
         lengths = {len(v) for _, v in parsed}
         if len(lengths) != 1:
             raise SystemExit(f"study.py: linked values of unequal count: {group}")
         factors.append(([n for n, _ in parsed], list(zip(*[v for _, v in parsed]))))
 
-    base = read_prm(scene)
     varied_names = [n for names, _ in factors for n in names]
     # parameters that set the resolution: grid entries and whatever is linked
     # to them; the others define the groups of --reference-finest
@@ -320,7 +343,7 @@ def main():
         if args.column_cells:
             row["cells"] = numbers(params["Grid/Number of cells"])[-1]
         row["h"] = cell_size(params)
-        row["points_per_cell_direction"] = params.get("Body/Points per cell direction", "")
+        row["points_per_cell_direction"] = params.get(f"{body}/Points per cell direction", "")
         row["repetitions"] = args.repeat
 
         summaries = []
@@ -368,6 +391,11 @@ def main():
                         shutil.copytree(out, dest)
                         open(os.path.join(dest, "stdout.txt"), "w").write(proc.stdout)
                         open(os.path.join(dest, "stderr.txt"), "w").write(proc.stderr)
+                        with open(os.path.join(dest, "study_case.json"), "w") as f:
+                            json.dump({"case": label, "scene": scene, "sets": dict(sets),
+                                       "h": row["h"],
+                                       "points_per_cell_direction":
+                                           row["points_per_cell_direction"]}, f, indent=1)
 
         if failure:
             n_failed += 1

@@ -549,16 +549,16 @@ def case5(run):
                 label="step 3 (load 0.3), point %s: stops the run" %
                 m.group(1))
     ax.axhline(-X0[1], color="k", ls="--", lw=1)
-    ax.text(1.0, -X0[1] - 0.06, "below this line point %s (initially at "
+    ax.text(1.0, -X0[1] + 0.03, "below this line point %s (initially at "
             "Y = %g) is under the grid's base y = 0" % (m.group(1), X0[1]),
             fontsize=8)
     ax.set_xlim(0, 10)
-    ax.set_ylim(-0.9, 0.05)
+    ax.set_ylim(-1.1, 0.05)
     ax.set_xlabel("initial height Y (m), points with X = %.2f" % X0[0])
     ax.set_ylabel("vertical displacement (m)")
     ax.set_title("hanging column: the written states; step 3 stops the run",
                  fontsize=9)
-    ax.legend(fontsize=7, loc="center right")
+    ax.legend(fontsize=7, loc="lower right")
     fig.tight_layout()
     save(fig, "hard5_point_off_grid.png")
     return st
@@ -575,6 +575,11 @@ def case6(run, nproc):
     note("$ " + cmdn)
     note("  test summaries identical: %s (%d lines)"
          % (so1 == son, len(so1.splitlines())))
+    if so1 != son:
+        for a, b in zip(so1.splitlines(), son.splitlines()):
+            if a != b:
+                note("    1 process:  " + a)
+                note("    %d processes: " % nproc + b)
     n1 = read_newton(os.path.join(out1, "newton.csv"))
     nn = read_newton(os.path.join(outn, "newton.csv"))
     same_shape = [len(a[1]) for a in n1] == [len(a[1]) for a in nn]
@@ -644,7 +649,9 @@ def case7(run):
         note("  %s: attempts %d, cuts %d, newton_iterations %d" %
              (tag, len(att), s["load_step_cuts"], s["newton_iterations"]))
         for line in so.splitlines():
-            if line.startswith("observed") or "cut" in line:
+            if line.startswith("observed") or "cut" in line or \
+                    line.startswith("extent in y") or \
+                    line.startswith("point 0:"):
                 note("  " + line)
         for i in np.where(st["converged"] == 0)[0]:
             rows = range(max(i - 1, 0), min(i + 3, len(st["step"])))
@@ -735,6 +742,15 @@ def collapse(result):
                      "largest stress_yy %.4g Pa" % (
                          lo, hi, m.sum(), pts["x"][m, 1].min(),
                          pts["x"][m, 1].max(), pts["stress_yy"][m].max()))
+        toe = tens & (pts["x"][:, 0] >= 12)
+        note("    volume ratio J of the tensile points with x >= 12: %.3f to "
+             "%.3f" % ((pts["volume"][toe] / (0.5 / 3) ** 2).min(),
+                       (pts["volume"][toe] / (0.5 / 3) ** 2).max()))
+    X = pts["initial_position"]
+    sym = np.isclose(X[:, 0], X[:, 0].min())
+    k = np.argmax(np.where(sym, X[:, 1], -1))
+    note("  top point of the symmetry line: initially (%.3f, %.3f), now "
+         "(%.3f, %.3f)" % (X[k, 0], X[k, 1], pts["x"][k, 0], pts["x"][k, 1]))
     top = np.argmax(pts["x"][:, 1])
     note("  highest point: now at (%.3f, %.3f), initially at (%.3f, %.3f), "
          "plastic multiplier %.3g" % (*pts["x"][top][:2],

@@ -1392,10 +1392,33 @@ namespace impm
         for (unsigned int d = 0; d < dim; ++d)
           values.push_back(point.get_location()[d] -
                            properties[P::initial_position + d]);
-        values.push_back(
-          read_symmetric(properties, P::kirchhoff_stress)[dim - 1][dim - 1] /
-          J);
+        const SymmetricTensor<2, 3> tau =
+          read_symmetric(properties, P::kirchhoff_stress);
+        values.push_back(tau[dim - 1][dim - 1] / J);
+        values.push_back(tau[0][0] / J);
         local.emplace_back(point.get_id(), values);
+      }
+    // The points nearest to the probe positions (smallest distance, then
+    // smallest id), found among all processes' points.
+    std::vector<std::pair<types::particle_index, std::vector<double>>>
+      probed;
+    for (const auto &probe : parameters.testing.probes)
+      {
+        AssertThrow(probe.size() == dim,
+                    ExcMessage("Parameter 'Testing/Probes': each position "
+                               "needs one coordinate per dimension."));
+        std::tuple<double, types::particle_index, std::vector<double>>
+          nearest(std::numeric_limits<double>::max(), 0, {});
+        for (const auto &[id, values] : local)
+          {
+            double distance = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              distance += std::pow(values[d] - probe[d], 2);
+            nearest = std::min(nearest, std::make_tuple(distance, id, values));
+          }
+        const auto all = Utilities::MPI::all_gather(communicator, nearest);
+        const auto best = *std::min_element(all.begin(), all.end());
+        probed.emplace_back(std::get<1>(best), std::get<2>(best));
       }
     std::sort(local.begin(), local.end());
     if (local.size() > parameters.testing.n_printed_points)
@@ -1410,6 +1433,7 @@ namespace impm
     std::sort(all.begin(), all.end());
     if (all.size() > parameters.testing.n_printed_points)
       all.resize(parameters.testing.n_printed_points);
+    all.insert(all.end(), probed.begin(), probed.end());
 
     for (const auto &line : test_lines)
       std::cout << line << '\n';
@@ -1480,6 +1504,17 @@ namespace impm
                       worst_condition);
         std::cout << buffer;
       }
+    static const char *face_names[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
+    for (const unsigned int c : reaction_columns)
+      {
+        std::snprintf(buffer,
+                      sizeof(buffer),
+                      "final reaction on face %s, component %s: %.6e\n",
+                      face_names[c / dim],
+                      axis[c % dim],
+                      reactions[c]);
+        std::cout << buffer;
+      }
     for (const auto &[id, values] : all)
       {
         std::cout << "point " << id << ": X =";
@@ -1493,7 +1528,9 @@ namespace impm
             std::cout << buffer;
           }
         std::snprintf(buffer, sizeof(buffer), "%.5e", values[2 * dim]);
-        std::cout << ", sigma_vertical = " << buffer << '\n';
+        std::cout << ", sigma_vertical = " << buffer;
+        std::snprintf(buffer, sizeof(buffer), "%.5e", values[2 * dim + 1]);
+        std::cout << ", sigma_xx = " << buffer << '\n';
       }
     std::cout << std::flush;
   }

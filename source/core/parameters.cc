@@ -420,6 +420,12 @@ namespace impm
                         "points' bounding box is within 'Reference "
                         "tolerance' of it: a final state computed another "
                         "way.");
+      prm.declare_entry("Probes",
+                        "",
+                        Patterns::Anything(),
+                        "Initial positions 'x, y; x, y; ...': the test "
+                        "summary prints the displacement and stress of the "
+                        "point initially nearest to each.");
       prm.declare_entry("Reference tolerance",
                         "0",
                         Patterns::Double(0.),
@@ -437,6 +443,11 @@ namespace impm
       reference_extent = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Reference extent")));
       reference_tolerance = prm.get_double("Reference tolerance");
+      probes.clear();
+      for (const auto &probe :
+           Utilities::split_string_list(prm.get("Probes"), ';'))
+        probes.push_back(
+          Utilities::string_to_double(Utilities::split_string_list(probe)));
       prm.leave_subsection();
     }
 

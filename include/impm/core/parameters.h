@@ -188,6 +188,8 @@ namespace impm
       std::vector<double> reference_extent;
       /** Allowed distance from the reference extent. */
       double reference_tolerance;
+      /** Points nearest to these initial positions are printed too. */
+      std::vector<std::vector<double>> probes;
 
       /** @brief Declare the entries in subsection "Testing". */
       static void
