@@ -5,8 +5,9 @@
 #   1. column: 4 ... 256 cells x {2x2, 3x3} x {GIMP, standard MPM}, 3 repetitions
 #   2. column, 16 cells, 2x2: every point's final vertical stress (Figure 1b)
 #   3. formulation comparison: column, 64 cells, 2x2, GIMP, previously
-#      converged vs updated Lagrangian, 5 repetitions; then one Testing run of
-#      each for the equality check
+#      converged vs updated Lagrangian, 5 interleaved repetitions; the same
+#      on the collapse (h = 0.5 m, 6x6, 3 repetitions); then one Testing run
+#      of each column case for the equality check
 #   4. collapse: h = 1, 0.5, 0.25 m x {3x3, 6x6}, point files of the initial
 #      and final state (kept in $STUDY_WORK, default build/study/)
 #   5. doc/scripts/plot_study.py (figures, tables into doc/benchmarks/README.md)
@@ -47,6 +48,7 @@ stage() { printf '\n== %s (%s s)\n' "$1" "$(elapsed)"; }
   echo "impm:       $impm, built $(date -u -r "$impm" '+%Y-%m-%d %H:%M UTC')"
   echo "commit:     $(git -C "$root" rev-parse --short HEAD 2>/dev/null)$(git -C "$root" diff --quiet HEAD -- source include 2>/dev/null || echo ' (sources modified in the work tree)')"
   echo "processes:  1 (serial runs, one at a time)"
+  echo "load avg:   $(cut -d' ' -f1-3 /proc/loadavg) at the start"
 } > "$out/machine.txt"
 cat "$out/machine.txt"
 
@@ -64,12 +66,19 @@ $study "$column" --column-cells 16 \
   --points-out "$out/column_points_16.csv" \
   --out "$work/column_points_16_runs.csv" --impm "$impm" || status=1
 
-stage "formulation comparison: timing, 5 repetitions"
+stage "formulation comparison: timing, 5 repetitions (interleaved)"
 $study "$column" --column-cells 64 \
   --set "Solver/Formulation=previously converged|updated Lagrangian" \
   --set "Material points/Basis=GIMP" --set "Body 1/Points per cell direction=2" \
-  --set Output/Interval=0 --repeat 5 \
+  --set Output/Interval=0 --repeat 5 --interleave \
   --out "$out/formulation.csv" --impm "$impm" || status=1
+
+stage "formulation comparison on a larger problem: collapse, h = 0.5 m, 6x6, 3 repetitions"
+$study "$collapse" \
+  --set "Solver/Formulation=previously converged|updated Lagrangian" \
+  --set "Body 1/Points per cell direction=6" --set Output/Interval=0 \
+  --set "Solver/Estimate condition number=false" --repeat 3 --interleave \
+  --out "$out/formulation_collapse.csv" --impm "$impm" || status=1
 
 stage "formulation comparison: final points (Testing printout)"
 $study "$column" --column-cells 64 \
@@ -85,6 +94,8 @@ $study "$collapse" \
   --set "Body 1/Points per cell direction=3|6" \
   --set Output/Interval=1000 --reference-finest \
   --keep "$work/collapse" --out "$out/collapse.csv" --impm "$impm" || status=1
+
+echo "load avg:   $(cut -d' ' -f1-3 /proc/loadavg) after the runs" >> "$out/machine.txt"
 
 stage "figures and tables"
 $py "$root/doc/scripts/plot_study.py" --data "$out" \

@@ -39,8 +39,12 @@ The error column:
 Other options:
   --repeat N       run every case N times; times are the median (columns
                    without suffix) and the minimum (suffix _min) of the N
-                   runs; counts (Newton iterations, ...) must agree between
+                   runs, and all N values (suffix _all, space separated);
+                   counts (Newton iterations, ...) must agree between
                    repetitions (a warning is printed if not).
+  --interleave     run the first repetition of every case, then the second,
+                   ... (instead of all repetitions of a case in a row), so
+                   that a slow drift of the machine affects all cases alike.
   --keep DIR       keep the output directory of every case's first repetition
                    as DIR/<case label>/ (with impm's stdout.txt and stderr.txt,
                    and study_case.json: the --set values, h and the points per
@@ -49,7 +53,8 @@ Other options:
                    (Testing/Enabled=true, Testing/Printed points=100000) and
                    write all final points of all cases to the CSV file F
                    (case, the varied parameters, id, X, Z, ux, uz,
-                   sigma_vertical; as printed: 6 significant digits).
+                   sigma_vertical and any further printed field, e.g.
+                   sigma_xx; as printed: 6 significant digits).
   --impm PATH      the executable (default: build/impm beside this script's
                    repository).
 
@@ -185,18 +190,20 @@ def tail(text, lines=15):
     return "\n".join(text.rstrip().splitlines()[-lines:])
 
 
-POINT_LINE = re.compile(
-    r"^point\s+(\d+):\s+X\s*=\s*(.*?),\s*u\s*=\s*(.*?),\s*sigma_vertical\s*=\s*(\S+)")
+POINT_LINE = re.compile(r"^point\s+(\d+):\s*(.*)$")
+POINT_FIELD = re.compile(r"([A-Za-z_]\w*)\s*=\s*(.*?)\s*(?=,\s*[A-Za-z_]\w*\s*=|$)")
 
 
 def parse_points(stdout):
+    """The Testing printout's point lines, 'point ID: X = x y, u = ux uy,
+    sigma_vertical = s[, name = v ...]', as (id, {name: [values]})."""
     points = []
     for line in stdout.splitlines():
         m = POINT_LINE.match(line.strip())
         if m:
-            X = m.group(2).split()
-            u = m.group(3).split()
-            points.append((int(m.group(1)), X, u, m.group(4)))
+            fields = {k: v.split() for k, v in POINT_FIELD.findall(m.group(2))}
+            if "X" in fields and "sigma_vertical" in fields:
+                points.append((int(m.group(1)), fields))
     return points
 
 
@@ -260,6 +267,8 @@ def main():
     parser.add_argument("--column-cells", metavar="N1,N2,...",
                         help="column refinement: N cells of width 50/N (square cells)")
     parser.add_argument("--repeat", type=int, default=1)
+    parser.add_argument("--interleave", action="store_true",
+                        help="run repetition k of every case before repetition k+1")
     parser.add_argument("--reference-finest", action="store_true")
     parser.add_argument("--out", required=True)
     parser.add_argument("--impm", default=os.path.join(
@@ -325,10 +334,12 @@ def main():
     print(f"study.py: {len(cases)} case(s) x {args.repeat} repetition(s) of {scene}",
           file=sys.stderr)
 
-    rows = []
     point_rows = []
-    n_failed = 0
+    point_extra = []  # printed fields besides X and u, in order of appearance
     study_start = time.perf_counter()
+
+    # every case: its --set values and the row it will fill
+    jobs = []
     for index, levels in enumerate(cases):
         varied = []
         for (names, _), level in zip(factors, levels):
@@ -337,7 +348,8 @@ def main():
         params = dict(base)
         params.update(dict(sets))
         label = label_of(index, [(n, v) for n, v in varied
-                                 if not (n.endswith("Upper corner") and "Grid/Number of cells" in varied_names)])
+                                 if not (n.endswith("Upper corner")
+                                         and "Grid/Number of cells" in varied_names)])
         row = {name: value for name, value in varied}
         row["case"] = label
         if args.column_cells:
@@ -345,65 +357,85 @@ def main():
         row["h"] = cell_size(params)
         row["points_per_cell_direction"] = params.get(f"{body}/Points per cell direction", "")
         row["repetitions"] = args.repeat
+        jobs.append(dict(label=label, varied=varied, sets=sets, row=row,
+                         summaries=[], elapsed=[], failure=None))
 
-        summaries = []
-        elapsed = []
-        failure = None
-        for rep in range(args.repeat):
-            with tempfile.TemporaryDirectory(prefix="impm_study_") as work:
-                cmd, proc, seconds, summary, out = run_once(
-                    impm, scene, sets, work, args.points_out is not None)
-                if summary is None:
-                    failure = (f"exit code {proc.returncode}" if proc.returncode
-                               else "no summary.json written")
-                    print(f"study.py: run {label} (repetition {rep + 1}) FAILED: {failure}\n"
-                          f"  command: {' '.join(repr(c) if ' ' in c else c for c in cmd)}\n"
-                          f"  --- stderr (tail) ---\n{tail(proc.stderr)}\n"
-                          f"  --- stdout (tail) ---\n{tail(proc.stdout, 8)}",
-                          file=sys.stderr)
-                    last = (proc.stderr.strip() or proc.stdout.strip() or failure).splitlines()
-                    failure = failure + ": " + " ".join(l.strip() for l in last[-3:])[:300]
-                    if args.keep:
-                        dest = os.path.join(args.keep, label)
-                        shutil.rmtree(dest, ignore_errors=True)
-                        if os.path.isdir(out):
-                            shutil.copytree(out, dest)
-                        os.makedirs(dest, exist_ok=True)
-                        open(os.path.join(dest, "stdout.txt"), "w").write(proc.stdout)
-                        open(os.path.join(dest, "stderr.txt"), "w").write(proc.stderr)
-                    break
-                summaries.append(summary)
-                elapsed.append(seconds)
-                if rep == 0:
-                    if args.reference_finest and "error_sigma_zz" not in summary:
-                        pvtu = final_point_file(out)
-                        if pvtu:
-                            row["runout"], row["drop"] = runout_and_drop(pvtu)
-                    if args.points_out:
-                        for pid, X, u, s in parse_points(proc.stdout):
-                            prow = {name: value for name, value in varied}
-                            prow.update(case=label, id=pid, X=X[0], Z=X[-1],
-                                        ux=u[0], uz=u[-1], sigma_vertical=s)
-                            point_rows.append(prow)
-                    if args.keep:
-                        dest = os.path.join(args.keep, label)
-                        shutil.rmtree(dest, ignore_errors=True)
-                        shutil.copytree(out, dest)
-                        open(os.path.join(dest, "stdout.txt"), "w").write(proc.stdout)
-                        open(os.path.join(dest, "stderr.txt"), "w").write(proc.stderr)
-                        with open(os.path.join(dest, "study_case.json"), "w") as f:
-                            json.dump({"case": label, "scene": scene, "sets": dict(sets),
-                                       "h": row["h"],
-                                       "points_per_cell_direction":
-                                           row["points_per_cell_direction"]}, f, indent=1)
+    # run order: all repetitions of a case in a row, or (--interleave) one
+    # repetition of every case after the other
+    if args.interleave:
+        order = [(rep, job) for rep in range(args.repeat) for job in jobs]
+    else:
+        order = [(rep, job) for job in jobs for rep in range(args.repeat)]
 
-        if failure:
+    def keep(job, proc, out):
+        dest = os.path.join(args.keep, job["label"])
+        shutil.rmtree(dest, ignore_errors=True)
+        if os.path.isdir(out):
+            shutil.copytree(out, dest)
+        os.makedirs(dest, exist_ok=True)
+        open(os.path.join(dest, "stdout.txt"), "w").write(proc.stdout)
+        open(os.path.join(dest, "stderr.txt"), "w").write(proc.stderr)
+        with open(os.path.join(dest, "study_case.json"), "w") as f:
+            json.dump({"case": job["label"], "scene": scene, "sets": dict(job["sets"]),
+                       "h": job["row"]["h"],
+                       "points_per_cell_direction": job["row"]["points_per_cell_direction"]},
+                      f, indent=1)
+
+    for rep, job in order:
+        if job["failure"]:
+            continue
+        label, row, varied = job["label"], job["row"], job["varied"]
+        with tempfile.TemporaryDirectory(prefix="impm_study_") as work:
+            cmd, proc, seconds, summary, out = run_once(
+                impm, scene, job["sets"], work, args.points_out is not None)
+            if summary is None:
+                failure = (f"exit code {proc.returncode}" if proc.returncode
+                           else "no summary.json written")
+                print(f"study.py: run {label} (repetition {rep + 1}) FAILED: {failure}\n"
+                      f"  command: {' '.join(repr(c) if ' ' in c else c for c in cmd)}\n"
+                      f"  --- stderr (tail) ---\n{tail(proc.stderr)}\n"
+                      f"  --- stdout (tail) ---\n{tail(proc.stdout, 8)}",
+                      file=sys.stderr)
+                last = (proc.stderr.strip() or proc.stdout.strip() or failure).splitlines()
+                job["failure"] = failure + ": " + " ".join(l.strip() for l in last[-3:])[:300]
+                if args.keep:
+                    keep(job, proc, out)
+                continue
+            job["summaries"].append(summary)
+            job["elapsed"].append(seconds)
+            if rep == 0:
+                if args.reference_finest and "error_sigma_zz" not in summary:
+                    pvtu = final_point_file(out)
+                    if pvtu:
+                        row["runout"], row["drop"] = runout_and_drop(pvtu)
+                if args.points_out:
+                    for pid, fields in parse_points(proc.stdout):
+                        prow = {name: value for name, value in varied}
+                        X, u = fields.pop("X"), fields.pop("u", ["", ""])
+                        prow.update(case=label, id=pid, X=X[0], Z=X[-1], ux=u[0], uz=u[-1])
+                        for key, values in fields.items():
+                            prow[key] = values[0] if len(values) == 1 else " ".join(values)
+                            if key not in point_extra:
+                                point_extra.append(key)
+                        point_rows.append(prow)
+                if args.keep:
+                    keep(job, proc, out)
+            print(f"study.py: {label} (repetition {rep + 1}): points "
+                  f"{summary.get('material_points')}, error "
+                  f"{summary.get('error_sigma_zz', '-')}, wall time "
+                  f"{summary.get('wall_time', float('nan')):.3f} s, Newton "
+                  f"{summary.get('newton_iterations')}", file=sys.stderr)
+
+    rows = []
+    n_failed = 0
+    for job in jobs:
+        row, summaries, elapsed, label = job["row"], job["summaries"], job["elapsed"], job["label"]
+        if job["failure"]:
             n_failed += 1
             row["status"] = "failed"
-            row["message"] = failure
+            row["message"] = job["failure"]
             rows.append(row)
             continue
-
         first = summaries[0]
         row["status"] = "ok"
         row["basis"] = first.get("basis", "")
@@ -419,24 +451,22 @@ def main():
         if "error_sigma_zz" in first:
             row["error"] = first["error_sigma_zz"]
             row["error_kind"] = "error_sigma_zz"
-        for key in TIMED:
-            values = [s[key] for s in summaries if key in s]
+
+        def put(column, values):
             if values:
-                row[key] = statistics.median(values)
-                row[key + "_min"] = min(values)
+                row[column] = statistics.median(values)
+                row[column + "_min"] = min(values)
+                if len(values) > 1:
+                    row[column + "_all"] = " ".join(f"{v:.6g}" for v in values)
+
+        for key in TIMED:
+            put(key, [s[key] for s in summaries if key in s])
         row["peak_memory_mb"] = max(s.get("peak_memory_mb", float("nan")) for s in summaries)
-        row["process_time"] = statistics.median(elapsed)
-        row["process_time_min"] = min(elapsed)
+        put("process_time", elapsed)
         for phase in PHASES:
             values = [s.get("wall_time_per_phase", {}).get(phase) for s in summaries]
-            values = [v for v in values if v is not None]
-            if values:
-                row[phase_column(phase)] = statistics.median(values)
-                row[phase_column(phase) + "_min"] = min(values)
+            put(phase_column(phase), [v for v in values if v is not None])
         rows.append(row)
-        print(f"study.py: {label}: points {row.get('material_points')}, "
-              f"error {row.get('error', '-')}, wall time {row['wall_time']:.3f} s, "
-              f"Newton {row.get('newton_iterations')}", file=sys.stderr)
 
     if args.reference_finest:
         groups = {}
@@ -461,13 +491,16 @@ def main():
     # columns: varied parameters first, then the rest in a fixed order
     columns = ["case", "status"] + varied_names + [
         "cells", "h", "points_per_cell_direction", "basis", "formulation", "repetitions",
-        "error", "error_kind", "reference", "runout", "drop",
-        "wall_time", "wall_time_min", "process_time", "process_time_min"]
-    for phase in PHASES:
-        columns += [phase_column(phase), phase_column(phase) + "_min"]
-    columns += ["microseconds_per_point_evaluation", "microseconds_per_point_evaluation_min",
-                "linear_solve_share", "linear_solve_share_min", "peak_memory_mb"]
-    columns += [c for c in COUNTS if c not in columns] + ["message"]
+        "error", "error_kind", "reference", "runout", "drop"]
+    for key in ["wall_time", "process_time"] + [phase_column(p) for p in PHASES] + [
+            "microseconds_per_point_evaluation", "linear_solve_share"]:
+        columns += [key, key + "_min"]
+    columns += ["peak_memory_mb"]
+    columns += [c for c in COUNTS if c not in columns]
+    for key in ["wall_time", "process_time"] + [phase_column(p) for p in PHASES] + [
+            "microseconds_per_point_evaluation", "linear_solve_share"]:
+        columns += [key + "_all"]
+    columns += ["message"]
     present = set().union(*[r.keys() for r in rows]) if rows else set()
     columns = [c for c in columns if c in present or c in ("case", "status", "error")]
 
@@ -478,7 +511,7 @@ def main():
         for row in rows:
             writer.writerow(row)
     if args.points_out:
-        pcols = ["case"] + varied_names + ["id", "X", "Z", "ux", "uz", "sigma_vertical"]
+        pcols = ["case"] + varied_names + ["id", "X", "Z", "ux", "uz"] + point_extra
         with open(args.points_out, "w", newline="") as f:
             writer = csv.DictWriter(f, fieldnames=pcols, extrasaction="ignore")
             writer.writeheader()

@@ -1400,15 +1400,14 @@ namespace impm
       }
     // The points nearest to the probe positions (smallest distance, then
     // smallest id), found among all processes' points.
-    std::vector<std::pair<types::particle_index, std::vector<double>>>
-      probed;
+    std::vector<std::pair<types::particle_index, std::vector<double>>> probed;
     for (const auto &probe : parameters.testing.probes)
       {
         AssertThrow(probe.size() == dim,
                     ExcMessage("Parameter 'Testing/Probes': each position "
                                "needs one coordinate per dimension."));
-        std::tuple<double, types::particle_index, std::vector<double>>
-          nearest(std::numeric_limits<double>::max(), 0, {});
+        std::tuple<double, types::particle_index, std::vector<double>> nearest(
+          std::numeric_limits<double>::max(), 0, {});
         for (const auto &[id, values] : local)
           {
             double distance = 0.;
@@ -1416,7 +1415,7 @@ namespace impm
               distance += std::pow(values[d] - probe[d], 2);
             nearest = std::min(nearest, std::make_tuple(distance, id, values));
           }
-        const auto all = Utilities::MPI::all_gather(communicator, nearest);
+        const auto all  = Utilities::MPI::all_gather(communicator, nearest);
         const auto best = *std::min_element(all.begin(), all.end());
         probed.emplace_back(std::get<1>(best), std::get<2>(best));
       }

@@ -59,16 +59,26 @@ namespace impm
     const std::string  stem =
       base_name + "_" + Utilities::int_to_string(step, 5);
 
-    // Each process writes its piece under a temporary name, then renames it.
+    // Each process with points writes its piece under a temporary name,
+    // then renames it; a process without points writes none (an empty piece
+    // is not valid VTK).
+    const std::vector<unsigned int> counts =
+      Utilities::MPI::gather(communicator,
+                             static_cast<unsigned int>(patches.size()),
+                             0);
     const std::string piece =
       stem + "." + Utilities::int_to_string(rank, 4) + ".vtu";
-    {
-      std::ofstream out(directory + "/" + piece + ".tmp");
-      AssertThrow(out, ExcMessage("Cannot write " + directory + "/" + piece));
-      this->write_vtu(out);
-    }
-    std::rename((directory + "/" + piece + ".tmp").c_str(),
-                (directory + "/" + piece).c_str());
+    if (!patches.empty())
+      {
+        {
+          std::ofstream out(directory + "/" + piece + ".tmp");
+          AssertThrow(out,
+                      ExcMessage("Cannot write " + directory + "/" + piece));
+          this->write_vtu(out);
+        }
+        std::rename((directory + "/" + piece + ".tmp").c_str(),
+                    (directory + "/" + piece).c_str());
+      }
     // All pieces exist before the records that name them.
     MPI_Barrier(communicator);
 
@@ -76,8 +86,9 @@ namespace impm
       {
         std::vector<std::string> pieces;
         for (unsigned int r = 0; r < n_ranks; ++r)
-          pieces.push_back(stem + "." + Utilities::int_to_string(r, 4) +
-                           ".vtu");
+          if (counts[r] > 0)
+            pieces.push_back(stem + "." + Utilities::int_to_string(r, 4) +
+                             ".vtu");
         {
           std::ofstream out(directory + "/" + stem + ".pvtu.tmp");
           this->write_pvtu_record(out, pieces);

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Runs every scene in prm/ (each shortened where its header says it is long)
+# and checks that it completes, conserves mass, keeps every load step
+# converged, and that its reactions balance its loads.
+# Usage: prm_scenes.sh IMPM PRM_DIRECTORY
+set -u
+impm=$1
+scenes=$(realpath "$2")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+status=0
+for scene in "$scenes"/*.prm; do
+  name=$(basename "$scene" .prm)
+  extra=()
+  # The collapse on the coarse grid (h = 1 m) keeps the suite fast.
+  [ "$name" = collapse ] && extra=(--set "Grid/Number of cells=16, 8")
+  if ! "$impm" "$scene" "${extra[@]}" --set Testing/Enabled=true \
+         --set Output/Interval=0 --set "Output directory=$name" > "$name.txt" 2>&1; then
+    echo "FAILED: $name did not complete"; tail -5 "$name.txt"; status=1; continue
+  fi
+  initial=$(sed -n 's/^total mass: \(\S*\) (initial \(\S*\))$/\2/p' "$name.txt")
+  final=$(sed -n 's/^total mass: \(\S*\) (initial \(\S*\))$/\1/p' "$name.txt")
+  [ -n "$final" ] && [ "$final" = "$initial" ] || { echo "FAILED: $name mass $initial -> $final"; status=1; }
+  if grep -q "NO$" "$name.txt"; then
+    echo "FAILED: $name: $(grep 'NO$' "$name.txt")"; status=1
+  fi
+  [ -s "$name/summary.json" ] || { echo "FAILED: $name wrote no summary.json"; status=1; }
+  echo "$name: $(grep -c '^step' "$name.txt") load steps, $(grep -c ': step cut$' "$name.txt") cut, complete"
+done
+exit $status
