@@ -12,7 +12,8 @@ with scripts/study.py into DIR (point files of the initial and final state
 only).
 
 Every case's last point file is drawn with the points coloured by the
-vertical Cauchy stress stress_yy (one colour range for all cases), into
+vertical Cauchy stress stress_yy (one colour range for all cases, diverging
+and white at zero: compression blue, tension red), into
   OUT/collapse_h<h>_<n>x<n>.png   (one per case)
   OUT/collapse_panel.png          (all cases, rows = points per cell,
                                    columns = h).
@@ -80,9 +81,13 @@ def worker(spec_file):
             pass
         pv.ColorBy(display, ("POINTS", "stress_yy"))
         lut = pv.GetColorTransferFunction("stress_yy")
-        lut.ApplyPreset("Turbo", True)
-        lut.RescaleTransferFunction(lo, hi)
         lut.AutomaticRescaleRangeMode = "Never"
+        # diverging, white at zero: compression blue, tension red
+        lut.ColorSpace = "Diverging"
+        points = [lo, 0.230, 0.299, 0.754]
+        if lo < 0 < hi:
+            points += [0.0, 0.865, 0.865, 0.865]
+        lut.RGBPoints = points + [hi, 0.706, 0.016, 0.150]
         bar = pv.GetScalarBar(lut, view)
         bar.Title = "stress_yy (Pa)"
         bar.ComponentTitle = ""
@@ -203,8 +208,11 @@ def render_matplotlib(cases, out, vrange, size):
         # marker size: the points' initial spacing, in points^2
         fig_w_m = VIEW["xmax"] - VIEW["xmin"]
         spacing_px = c["h"] / c["n"] * (0.8 * size[0]) / fig_w_m
+        from matplotlib.colors import Normalize, TwoSlopeNorm
+        norm = (TwoSlopeNorm(0.0, vrange[0], vrange[1]) if vrange[0] < 0 < vrange[1]
+                else Normalize(vrange[0], vrange[1]))
         sc = ax.scatter(x[:, 0], x[:, 1], c=s, s=(spacing_px * 72 / 100) ** 2, marker="o",
-                        linewidths=0, cmap="turbo", vmin=vrange[0], vmax=vrange[1])
+                        linewidths=0, cmap="coolwarm", norm=norm)
         ax.set_xlim(VIEW["xmin"], VIEW["xmax"])
         ax.set_ylim(VIEW["ymin"], VIEW["ymax"])
         ax.set_aspect("equal")

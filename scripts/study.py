@@ -36,6 +36,10 @@ The error column:
     written as columns too.  The reference run gets error 0 and
     reference = yes.
 
+Also from the run's steps.csv: steps_accepted and steps_rejected (load steps
+taken, and steps restarted with a smaller increment; summary.json's
+load_steps is the nominal number).
+
 Other options:
   --repeat N       run every case N times; times are the median (columns
                    without suffix) and the minimum (suffix _min) of the N
@@ -404,6 +408,12 @@ def main():
             job["summaries"].append(summary)
             job["elapsed"].append(seconds)
             if rep == 0:
+                steps_csv = os.path.join(out, "steps.csv")
+                if os.path.exists(steps_csv):
+                    with open(steps_csv) as f:
+                        flags = [r.get("converged") for r in csv.DictReader(f)]
+                    row["steps_accepted"] = sum(1 for c in flags if c == "1")
+                    row["steps_rejected"] = sum(1 for c in flags if c == "0")
                 if args.reference_finest and "error_sigma_zz" not in summary:
                     pvtu = final_point_file(out)
                     if pvtu:
@@ -496,7 +506,7 @@ def main():
             "microseconds_per_point_evaluation", "linear_solve_share"]:
         columns += [key, key + "_min"]
     columns += ["peak_memory_mb"]
-    columns += [c for c in COUNTS if c not in columns]
+    columns += [c for c in COUNTS if c not in columns] + ["steps_accepted", "steps_rejected"]
     for key in ["wall_time", "process_time"] + [phase_column(p) for p in PHASES] + [
             "microseconds_per_point_evaluation", "linear_solve_share"]:
         columns += [key + "_all"]

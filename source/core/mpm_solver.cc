@@ -373,6 +373,8 @@ namespace impm
         for (unsigned int d = 0; d < dim; ++d)
           half_length[d] = properties[P::domain_half_length + d];
         basis.evaluate(point.get_location(), half_length, step.support);
+        step.previous_jacobian =
+          determinant(read_tensor(properties, P::deformation_gradient));
         for (unsigned int v = 0; v < step.support.n_nodes; ++v)
           {
             const auto node = node_dofs.find(step.support.nodes[v]);
@@ -738,8 +740,7 @@ namespace impm
       {
         const PointStep &step       = point_steps[p++];
         const auto       properties = point.get_properties();
-        const double     Jn =
-          determinant(read_tensor(properties, P::deformation_gradient));
+        const double     Jn         = step.previous_jacobian;
         if (!updated_lagrangian)
           {
             // f_int = sum_p P~ grad S V^n, V^n = J_n V^0.
@@ -827,8 +828,7 @@ namespace impm
         const PointStep &step       = point_steps[p++];
         const auto      &s          = step.support;
         const auto       properties = point.get_properties();
-        const double     Jn =
-          determinant(read_tensor(properties, P::deformation_gradient));
+        const double     Jn         = step.previous_jacobian;
         material_of(properties).tangent(step.update, dim, C);
         Tensor<4, dim> A;
         double         volume;
@@ -1338,7 +1338,8 @@ namespace impm
          << "  \"newton_iterations\": " << total_newton_iterations << ",\n";
     if (last_error >= 0.)
       json << "  \"error_sigma_zz\": " << last_error << ",\n";
-    json << "  \"load_step_cuts\": " << n_cuts << ",\n"
+    json << "  \"load_steps_taken\": " << accepted_load_steps << ",\n"
+         << "  \"load_step_cuts\": " << n_cuts << ",\n"
          << "  \"largest_point_increment_in_cells\": "
          << largest_point_increment << ",\n"
          << "  \"max_reaction_imbalance\": " << max_reaction_imbalance << ",\n"
@@ -1739,6 +1740,7 @@ namespace impm
                   std::min(min_newton_order,
                            std::log(residuals[k + 1]) / std::log(residuals[k]));
             ++load_step;
+            accepted_load_steps = load_step;
             update_material_points(load_step);
             new_state   = true;
             load_factor = target;

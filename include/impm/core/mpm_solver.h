@@ -80,6 +80,8 @@ namespace impm
       Tensor<2, dim> deformation_increment;
       /** Its inverse. */
       Tensor<2, dim> deformation_increment_inverse;
+      /** @f$J_n = \det F_n@f$ at the start of the step. */
+      double previous_jacobian;
       /** Constitutive result of the current iterate. */
       ConstitutiveUpdate update;
     };
@@ -221,6 +223,8 @@ namespace impm
     double worst_condition = 0.;
     /** Number of load-step cuts. */
     unsigned int n_cuts = 0;
+    /** Number of converged load steps. */
+    unsigned int accepted_load_steps = 0;
     /** Residual evaluations (stress updates) over the run. */
     unsigned int residual_evaluations = 0;
     /** Largest point displacement of an accepted step, in cells. */
