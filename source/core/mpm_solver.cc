@@ -1224,7 +1224,6 @@ namespace impm
         point_output.set_point(p++, point.get_location(), values);
       }
     point_output.write(load_factor, load_step);
-    ++n_output_steps;
   }
 
 
@@ -1782,10 +1781,19 @@ namespace impm
                        << target - start << ',' << (converged ? 1 : 0) << ','
                        << iterations << ',' << residuals.back() << ','
                        << n_system_dofs_last;
+            // A cut attempt has no error or reactions: empty fields.
             if (column)
-              steps_file << ',' << (converged ? last_error : 0.);
+              {
+                steps_file << ',';
+                if (converged)
+                  steps_file << last_error;
+              }
             for (const unsigned int c : reaction_columns)
-              steps_file << ',' << (converged ? reactions[c] : 0.);
+              {
+                steps_file << ',';
+                if (converged)
+                  steps_file << reactions[c];
+              }
             for (const auto &phase : phase_names)
               {
                 const double now = times.count(phase) ? times.at(phase) : 0.;

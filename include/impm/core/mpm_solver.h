@@ -242,7 +242,6 @@ namespace impm
     } final_state;
 
     PointOutput<dim> point_output;
-    unsigned int     n_output_steps = 0;
     std::ofstream    steps_file;
     std::ofstream    newton_file;
 

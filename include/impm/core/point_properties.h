@@ -1,8 +1,6 @@
 #ifndef impm_core_point_properties_h
 #define impm_core_point_properties_h
 
-#include <deal.II/numerics/data_component_interpretation.h>
-
 #include <limits>
 
 namespace impm
