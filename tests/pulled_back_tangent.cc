@@ -1,6 +1,8 @@
 // The consistent tangent A = dP~/d(dF) of the previously converged
 // formulation against central finite differences of P~(dF), for Hencky
-// elasticity and von Mises plasticity, in plane strain (2D) and 3D.
+// elasticity and von Mises plasticity, in plane strain (2D) and 3D; and the
+// model's direct route to its material part (perturbing dF itself) against
+// the generic pull-back of C.
 
 #include <impm/mechanics/material.h>
 #include <impm/mechanics/pulled_back_stress.h>
@@ -43,12 +45,22 @@ check(const std::string &name,
 
   ConstitutiveUpdate update;
   P_of(dF, update);
-  Tensor<4, 3> C;
-  material.tangent(update, dim, C);
-  const Tensor<4, dim> A =
-    PulledBackStress<dim>::tangent(C, update.kirchhoff_stress, invert(dF), Jn);
+  const Tensor<2, dim> dF_inverse = invert(dF);
+  // Two routes to the material part M: the model's own (perturbing dF
+  // directly) and the generic pull-back of C in the base class.
+  Tensor<4, 3> M_direct, M_pulled_back;
+  material.pulled_back_tangent(update,
+                               dim,
+                               PulledBackStress<dim>::embed(dF_inverse),
+                               M_direct);
+  material.Material::pulled_back_tangent(
+    update, dim, PulledBackStress<dim>::embed(dF_inverse), M_pulled_back);
+  const Tensor<4, dim> A = PulledBackStress<dim>::tangent(
+    M_direct, update.kirchhoff_stress, dF_inverse, Jn);
+  const Tensor<4, dim> A_pulled_back = PulledBackStress<dim>::tangent(
+    M_pulled_back, update.kirchhoff_stress, dF_inverse, Jn);
 
-  double       max_error = 0., max_entry = 0.;
+  double       max_error = 0., max_entry = 0., max_route_difference = 0.;
   const double h = 1e-6;
   for (unsigned int k = 0; k < dim; ++k)
     for (unsigned int q = 0; q < dim; ++q)
@@ -64,6 +76,9 @@ check(const std::string &name,
               max_error =
                 std::max(max_error, std::abs(fd[i][j] - A[i][j][k][q]));
               max_entry = std::max(max_entry, std::abs(A[i][j][k][q]));
+              max_route_difference =
+                std::max(max_route_difference,
+                         std::abs(A[i][j][k][q] - A_pulled_back[i][j][k][q]));
             }
       }
   std::cout << name << " (" << dim << "D): state is "
@@ -71,6 +86,10 @@ check(const std::string &name,
   impm_tests::check_below("  relative error of the tangent",
                           max_error / max_entry,
                           1e-6);
+  impm_tests::check_below("  relative difference of the direct and the "
+                          "pulled-back route",
+                          max_route_difference / max_entry,
+                          1e-13);
 }
 
 int

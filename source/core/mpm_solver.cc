@@ -27,6 +27,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -373,8 +374,8 @@ namespace impm
         for (unsigned int d = 0; d < dim; ++d)
           half_length[d] = properties[P::domain_half_length + d];
         basis.evaluate(point.get_location(), half_length, step.support);
-        step.previous_jacobian =
-          determinant(read_tensor(properties, P::deformation_gradient));
+        step.initial_volume = properties[P::initial_volume];
+        step.material       = &material_of(properties);
         for (unsigned int v = 0; v < step.support.n_nodes; ++v)
           {
             const auto node = node_dofs.find(step.support.nodes[v]);
@@ -456,11 +457,10 @@ namespace impm
     system_owned.set_size(n_system);
     system_owned.add_range(offset, offset + n_local_system);
     system_relevant = system_owned;
+    make_assembly_groups();
     std::vector<types::global_dof_index> rows;
-    for (const PointStep &step : point_steps)
-      for (unsigned int k = 0; k < step.support.n_nodes * dim; ++k)
-        if (system_index[step.dofs[k]] != numbers::invalid_dof_index)
-          rows.push_back(system_index[step.dofs[k]]);
+    for (const AssemblyGroup &group : assembly_groups)
+      rows.insert(rows.end(), group.rows.begin(), group.rows.end());
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
     system_relevant.add_indices(rows.begin(), rows.end());
@@ -489,16 +489,9 @@ namespace impm
         for (const auto row : indices)
           dsp.add_entries(row, indices.begin(), indices.end(), true);
       }
-    for (const PointStep &step : point_steps)
-      {
-        indices.clear();
-        for (unsigned int k = 0; k < step.support.n_nodes * dim; ++k)
-          if (system_index[step.dofs[k]] != numbers::invalid_dof_index)
-            indices.push_back(system_index[step.dofs[k]]);
-        std::sort(indices.begin(), indices.end());
-        for (const auto row : indices)
-          dsp.add_entries(row, indices.begin(), indices.end(), true);
-      }
+    for (const AssemblyGroup &group : assembly_groups)
+      for (const auto row : group.rows)
+        dsp.add_entries(row, group.rows.begin(), group.rows.end(), true);
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                system_owned,
                                                communicator,
@@ -507,6 +500,65 @@ namespace impm
     system_rhs.reinit(system_owned, communicator);
     system_solution.reinit(system_owned, communicator);
     n_system_dofs_last = n_system;
+  }
+
+
+
+  template <int dim>
+  void
+  MPMSolver<dim>::make_assembly_groups()
+  {
+    // Order the points by their support DoFs (ties by index, so the order
+    // of summation within a group is that of the points), then cut the
+    // order where the support changes.
+    std::vector<unsigned int> order(point_steps.size());
+    std::iota(order.begin(), order.end(), 0u);
+    const auto same_support = [this](const unsigned int a,
+                                     const unsigned int b) {
+      const PointStep &x = point_steps[a], &y = point_steps[b];
+      return x.support.n_nodes == y.support.n_nodes &&
+             std::equal(x.dofs.begin(),
+                        x.dofs.begin() + x.support.n_nodes * dim,
+                        y.dofs.begin());
+    };
+    std::sort(order.begin(),
+              order.end(),
+              [this](const unsigned int a, const unsigned int b) {
+                const PointStep &x = point_steps[a], &y = point_steps[b];
+                if (x.support.n_nodes != y.support.n_nodes)
+                  return x.support.n_nodes < y.support.n_nodes;
+                const unsigned int n = x.support.n_nodes * dim;
+                for (unsigned int k = 0; k < n; ++k)
+                  if (x.dofs[k] != y.dofs[k])
+                    return x.dofs[k] < y.dofs[k];
+                return a < b;
+              });
+
+    assembly_groups.clear();
+    std::vector<std::pair<types::global_dof_index, unsigned int>> entries;
+    for (unsigned int first = 0; first < order.size();)
+      {
+        unsigned int last = first + 1;
+        while (last < order.size() && same_support(order[first], order[last]))
+          ++last;
+        AssemblyGroup &group = assembly_groups.emplace_back();
+        group.points.assign(order.begin() + first, order.begin() + last);
+        const PointStep &step = point_steps[order[first]];
+        entries.clear();
+        for (unsigned int k = 0; k < step.support.n_nodes * dim; ++k)
+          if (system_index[step.dofs[k]] != numbers::invalid_dof_index)
+            entries.emplace_back(system_index[step.dofs[k]], k);
+        std::sort(entries.begin(), entries.end());
+        for (const auto &[row, k] : entries)
+          {
+            group.rows.push_back(row);
+            group.local.push_back(k);
+          }
+        // Points whose every DoF is constrained add nothing to the matrix.
+        if (group.rows.empty())
+          assembly_groups.pop_back();
+        first = last;
+      }
   }
 
 
@@ -733,46 +785,44 @@ namespace impm
     TimerOutput::Scope scope(timer, "assembly");
     const bool         updated_lagrangian =
       parameters.solver.formulation == "updated Lagrangian";
-    using P        = PointProperties<dim>;
     internal_force = 0.;
-    unsigned int p = 0;
-    for (const auto &point : material_points)
+    if (!updated_lagrangian)
+      for (const PointStep &step : point_steps)
+        {
+          // f_int = sum_p P~ grad S V^n with the start-of-step gradients
+          // as they are.
+          const Tensor<2, dim> stress =
+            PulledBackStress<dim>::stress_times_volume(
+              step.update.kirchhoff_stress,
+              step.deformation_increment_inverse,
+              step.initial_volume);
+          for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+            {
+              const Tensor<1, dim> force = stress * step.support.gradients[v];
+              for (unsigned int i = 0; i < dim; ++i)
+                internal_force.local_element(step.dofs[v * dim + i]) +=
+                  force[i];
+            }
+        }
+    else
       {
-        const PointStep &step       = point_steps[p++];
-        const auto       properties = point.get_properties();
-        const double     Jn         = step.previous_jacobian;
-        if (!updated_lagrangian)
+        // f_int = sum_p sigma grad_x S V^{n+1} with the gradients mapped to
+        // the current configuration, grad_x S = grad S dF^-1 (kept for the
+        // matrix of this iterate), and sigma V^{n+1} = tau V^0.
+        mapped_gradients.resize(point_steps.size());
+        for (unsigned int p = 0; p < point_steps.size(); ++p)
           {
-            // f_int = sum_p P~ grad S V^n, V^n = J_n V^0.
-            const Tensor<2, dim> stress =
-              PulledBackStress<dim>::stress(step.update.kirchhoff_stress,
-                                            step.deformation_increment_inverse,
-                                            Jn) *
-              (Jn * properties[P::initial_volume]);
-            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-              {
-                const Tensor<1, dim> force = stress * step.support.gradients[v];
-                for (unsigned int i = 0; i < dim; ++i)
-                  internal_force.local_element(step.dofs[v * dim + i]) +=
-                    force[i];
-              }
-          }
-        else
-          {
-            // f_int = sum_p sigma grad_x S V^{n+1} with the gradients mapped
-            // to the current configuration, grad_x S = grad S dF^-1, and
-            // sigma V^{n+1} = tau V^0.
-            Tensor<2, dim> stress;
+            const PointStep &step = point_steps[p];
+            Tensor<2, dim>   stress;
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
-                stress[i][j] = step.update.kirchhoff_stress[i][j] *
-                               properties[P::initial_volume];
+                stress[i][j] =
+                  step.update.kirchhoff_stress[i][j] * step.initial_volume;
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               {
-                const Tensor<1, dim> mapped_gradient =
-                  step.support.gradients[v] *
-                  step.deformation_increment_inverse;
-                const Tensor<1, dim> force = stress * mapped_gradient;
+                mapped_gradients[p][v] = step.support.gradients[v] *
+                                         step.deformation_increment_inverse;
+                const Tensor<1, dim> force = stress * mapped_gradients[p][v];
                 for (unsigned int i = 0; i < dim; ++i)
                   internal_force.local_element(step.dofs[v * dim + i]) +=
                     force[i];
@@ -812,77 +862,77 @@ namespace impm
   MPMSolver<dim>::assemble_matrix()
   {
     TimerOutput::Scope scope(timer, "assembly");
-    using P                         = PointProperties<dim>;
     system_matrix                   = 0.;
     constexpr unsigned int max_dofs = PointSupport<dim>::max_nodes * dim;
-    std::array<types::global_dof_index, max_dofs>            rows;
-    std::array<unsigned int, max_dofs>                       local;
-    std::array<double, max_dofs>                             values;
-    Tensor<4, 3>                                             C;
-    std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes> mapped_gradients;
-    const bool updated_lagrangian =
+    std::vector<double>    local_matrix(max_dofs * max_dofs);
+    Tensor<4, 3>           material_tangent;
+    const bool             updated_lagrangian =
       parameters.solver.formulation == "updated Lagrangian";
-    unsigned int p = 0;
-    for (const auto &point : material_points)
+    for (const AssemblyGroup &group : assembly_groups)
       {
-        const PointStep &step       = point_steps[p++];
-        const auto      &s          = step.support;
-        const auto       properties = point.get_properties();
-        const double     Jn         = step.previous_jacobian;
-        material_of(properties).tangent(step.update, dim, C);
-        Tensor<4, dim> A;
-        double         volume;
-        const std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>
-          *gradients = &s.gradients;
-        if (!updated_lagrangian)
+        const unsigned int n = group.rows.size();
+        std::fill(local_matrix.begin(), local_matrix.begin() + n * n, 0.);
+        for (const unsigned int p : group.points)
           {
-            A =
-              PulledBackStress<dim>::tangent(C,
-                                             step.update.kirchhoff_stress,
-                                             step.deformation_increment_inverse,
-                                             Jn);
-            volume = Jn * properties[P::initial_volume];
-          }
-        else
-          {
-            // Spatial tangent a = C/J - sigma_il delta_jk over V^{n+1} = J
-            // V^0, with the gradients mapped to the current configuration.
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                for (unsigned int k = 0; k < dim; ++k)
-                  for (unsigned int l = 0; l < dim; ++l)
-                    A[i][j][k][l] =
-                      C[i][j][k][l] -
-                      (j == k ? step.update.kirchhoff_stress[i][l] : 0.);
-            volume = properties[P::initial_volume];
-            for (unsigned int v = 0; v < s.n_nodes; ++v)
-              mapped_gradients[v] =
-                s.gradients[v] * step.deformation_increment_inverse;
-            gradients = &mapped_gradients;
-          }
-
-        unsigned int n = 0;
-        for (unsigned int k = 0; k < s.n_nodes * dim; ++k)
-          if (system_index[step.dofs[k]] != numbers::invalid_dof_index)
-            {
-              rows[n]    = system_index[step.dofs[k]];
-              local[n++] = k;
-            }
-        // B[v][i][k][q] = grad_v[j] A[i][j][k][q] V, then K = B grad_w[q].
-        for (unsigned int a = 0; a < n; ++a)
-          {
-            const unsigned int v = local[a] / dim, i = local[a] % dim;
-            Tensor<2, dim>     B;
-            for (unsigned int j = 0; j < dim; ++j)
-              B += (*gradients)[v][j] * A[i][j];
-            B *= volume;
-            for (unsigned int b = 0; b < n; ++b)
+            const PointStep &step = point_steps[p];
+            Tensor<4, dim>   A;
+            const std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>
+              *gradients = &step.support.gradients;
+            if (!updated_lagrangian)
               {
-                const unsigned int w = local[b] / dim, k = local[b] % dim;
-                values[b] = B[k] * (*gradients)[w];
+                // A of eq. 10 with the start-of-step gradients, over V^n =
+                // J_n V^0; the model differentiates with respect to dF
+                // directly, so nothing is pulled back or mapped.
+                step.material->pulled_back_tangent(
+                  step.update,
+                  dim,
+                  PulledBackStress<dim>::embed(
+                    step.deformation_increment_inverse),
+                  material_tangent);
+                A = PulledBackStress<dim>::tangent_times_volume(
+                  material_tangent,
+                  step.update.kirchhoff_stress,
+                  step.deformation_increment_inverse,
+                  step.initial_volume);
               }
-            system_matrix.add(rows[a], n, rows.data(), values.data());
+            else
+              {
+                // Spatial tangent a = C/J - sigma_il delta_jk over V^{n+1} =
+                // J V^0, with the mapped gradients of the residual.
+                step.material->tangent(step.update, dim, material_tangent);
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    for (unsigned int k = 0; k < dim; ++k)
+                      for (unsigned int l = 0; l < dim; ++l)
+                        A[i][j][k][l] =
+                          (material_tangent[i][j][k][l] -
+                           (j == k ? step.update.kirchhoff_stress[i][l] : 0.)) *
+                          step.initial_volume;
+                gradients = &mapped_gradients[p];
+              }
+
+            // B[i][k][q] = grad_v[j] A[i][j][k][q] for the row's node v,
+            // then K = B[k] grad_w.
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                const unsigned int v = group.local[a] / dim,
+                                   i = group.local[a] % dim;
+                Tensor<2, dim> B;
+                for (unsigned int j = 0; j < dim; ++j)
+                  B += (*gradients)[v][j] * A[i][j];
+                double *row = &local_matrix[a * n];
+                for (unsigned int b = 0; b < n; ++b)
+                  row[b] += B[group.local[b] % dim] *
+                            (*gradients)[group.local[b] / dim];
+              }
           }
+        for (unsigned int a = 0; a < n; ++a)
+          system_matrix.add(group.rows[a],
+                            n,
+                            group.rows.data(),
+                            &local_matrix[a * n],
+                            /*elide_zero_values=*/false,
+                            /*col_indices_are_sorted=*/true);
       }
     for (const FacePenalty &face : ghost_faces)
       for (unsigned int i = 0; i < face.dofs.size(); ++i)

@@ -109,36 +109,98 @@ namespace impm
 
 
   void
+  Material::pulled_back_tangent(const ConstitutiveUpdate &result,
+                                const unsigned int        n_components,
+                                const Tensor<2, 3>       &dF_inverse,
+                                Tensor<4, 3>             &M) const
+  {
+    Tensor<4, 3> C;
+    tangent(result, n_components, C);
+    // M_ijkq = C_imkl dFinv_ql dFinv_jm, contracted over l, then over m.
+    Tensor<4, 3> Cq;
+    for (unsigned int i = 0; i < n_components; ++i)
+      for (unsigned int m = 0; m < n_components; ++m)
+        for (unsigned int k = 0; k < n_components; ++k)
+          for (unsigned int q = 0; q < n_components; ++q)
+            for (unsigned int l = 0; l < n_components; ++l)
+              Cq[i][m][k][q] += C[i][m][k][l] * dF_inverse[q][l];
+    M = 0;
+    for (unsigned int i = 0; i < n_components; ++i)
+      for (unsigned int j = 0; j < n_components; ++j)
+        for (unsigned int k = 0; k < n_components; ++k)
+          for (unsigned int q = 0; q < n_components; ++q)
+            for (unsigned int m = 0; m < n_components; ++m)
+              M[i][j][k][q] += Cq[i][m][k][q] * dF_inverse[j][m];
+  }
+
+
+
+  void
   HenckyVonMises::tangent(const ConstitutiveUpdate &r,
                           const unsigned int        n_components,
                           Tensor<4, 3>             &C) const
   {
+    // Perturbations e_k (x) e_l in the global frame: R = Q^T.
+    principal_response(r, n_components, transpose(r.trial_eigenvectors), C);
+  }
+
+
+
+  void
+  HenckyVonMises::pulled_back_tangent(const ConstitutiveUpdate &r,
+                                      const unsigned int        n_components,
+                                      const Tensor<2, 3>       &dF_inverse,
+                                      Tensor<4, 3>             &M) const
+  {
+    // d(dF) = e_k (x) e_q is G = d(dF) dF^-1 = e_k (x) (row q of dF^-1); in
+    // the principal frame G'_ab = Q_ka R_bq with R = Q^T dF^-T, and the
+    // result tau dF^-T rotates back as Q dtau' Q^T dF^-T = Q dtau' R.
+    const Tensor<2, 3> &Q = r.trial_eigenvectors;
+    Tensor<2, 3>        R;
+    for (unsigned int b = 0; b < 3; ++b)
+      for (unsigned int q = 0; q < n_components; ++q)
+        for (unsigned int l = 0; l < n_components; ++l)
+          R[b][q] += Q[l][b] * dF_inverse[q][l];
+    principal_response(r, n_components, R, M);
+  }
+
+
+
+  void
+  HenckyVonMises::principal_response(const ConstitutiveUpdate &r,
+                                     const unsigned int        n_components,
+                                     const Tensor<2, 3>       &R,
+                                     Tensor<4, 3>             &T) const
+  {
     const std::array<double, 3> &lam = r.trial_eigenvalues;
     const Tensor<2, 3>          &Q   = r.trial_eigenvectors;
 
-    // theta_ab = d ln(lambda)/d lambda divided differences.
+    // theta_ab = d ln(lambda)/d lambda divided differences (symmetric).
     double theta[3][3];
     for (unsigned int a = 0; a < 3; ++a)
-      for (unsigned int b = 0; b < 3; ++b)
-        theta[a][b] = log_divided_difference(lam[a], lam[b]);
+      {
+        theta[a][a] = 1. / lam[a];
+        for (unsigned int b = a + 1; b < 3; ++b)
+          theta[a][b] = theta[b][a] = log_divided_difference(lam[a], lam[b]);
+      }
 
     const double bulk     = lambda + 2. * mu / 3.;
     const double shear2   = 2. * mu * r.return_ratio;
     const double lambda_e = r.plastic ? bulk - shear2 / 3. : lambda;
 
-    C = 0;
+    T = 0;
     for (unsigned int k = 0; k < n_components; ++k)
       for (unsigned int l = 0; l < n_components; ++l)
         {
-          // G = e_k (x) e_l in the principal frame: G'_ab = Q_ka Q_lb.
-          // d eps'_ab = 1/2 theta_ab (lambda_b G'_ab + lambda_a G'_ba).
+          // G'_ab = Q_ka R_bl; d eps'_ab = 1/2 theta_ab (lambda_b G'_ab +
+          // lambda_a G'_ba).
           double deps[3][3];
           double trace = 0.;
           for (unsigned int a = 0; a < 3; ++a)
             for (unsigned int b = 0; b < 3; ++b)
               deps[a][b] =
                 0.5 * theta[a][b] *
-                (lam[b] * Q[k][a] * Q[l][b] + lam[a] * Q[k][b] * Q[l][a]);
+                (lam[b] * Q[k][a] * R[b][l] + lam[a] * Q[k][b] * R[a][l]);
           for (unsigned int a = 0; a < 3; ++a)
             trace += deps[a][a];
 
@@ -159,16 +221,17 @@ namespace impm
                 dtau[a][a] -= shear2 * r.flow_direction[a] * n_dot;
             }
 
-          // Back to the global frame: d tau = Q d tau' Q^T.
+          // Back to the global frame: T_imkl = Q_ia dtau'_ab R_bm.
           for (unsigned int i = 0; i < n_components; ++i)
-            for (unsigned int m = 0; m < n_components; ++m)
-              {
-                double value = 0.;
-                for (unsigned int a = 0; a < 3; ++a)
-                  for (unsigned int b = 0; b < 3; ++b)
-                    value += Q[i][a] * dtau[a][b] * Q[m][b];
-                C[i][m][k][l] = value;
-              }
+            {
+              double row[3];
+              for (unsigned int b = 0; b < 3; ++b)
+                row[b] = Q[i][0] * dtau[0][b] + Q[i][1] * dtau[1][b] +
+                         Q[i][2] * dtau[2][b];
+              for (unsigned int m = 0; m < n_components; ++m)
+                T[i][m][k][l] =
+                  row[0] * R[0][m] + row[1] * R[1][m] + row[2] * R[2][m];
+            }
         }
   }
 

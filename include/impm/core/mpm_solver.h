@@ -80,10 +80,28 @@ namespace impm
       Tensor<2, dim> deformation_increment;
       /** Its inverse. */
       Tensor<2, dim> deformation_increment_inverse;
-      /** @f$J_n = \det F_n@f$ at the start of the step. */
-      double previous_jacobian;
+      /** Initial volume @f$V_p^0@f$. */
+      double initial_volume;
+      /** The point's material (of its body). */
+      const Material *material;
       /** Constitutive result of the current iterate. */
       ConstitutiveUpdate update;
+    };
+
+    /**
+     * Points with the same support DoFs: their stiffness is summed in one
+     * dense local matrix and added to the system matrix once (fixed during
+     * a load step).
+     */
+    struct AssemblyGroup
+    {
+      /** Indices into point_steps of the group's points. */
+      std::vector<unsigned int> points;
+      /** Positions in PointStep::dofs of the DoFs in the linear system,
+       *  in the order of rows. */
+      std::vector<unsigned int> local;
+      /** Their indices in the linear system, ascending. */
+      std::vector<types::global_dof_index> rows;
     };
 
     /** A face penalty of ghost stabilisation, fixed during a load step. */
@@ -116,6 +134,8 @@ namespace impm
     evaluate_basis();
     void
     number_system_dofs();
+    void
+    make_assembly_groups();
     void
     setup_ghost_penalty(const std::vector<bool> &touched);
     NewtonOutcome
@@ -188,6 +208,15 @@ namespace impm
 
     Particles::ParticleHandler<dim> material_points;
     std::vector<PointStep>          point_steps;
+    /** The points grouped by support for the matrix assembly. */
+    std::vector<AssemblyGroup> assembly_groups;
+    /**
+     * Updated Lagrangian form only: the gradients mapped to the current
+     * configuration by the last residual assembly, reused by the matrix
+     * assembly of the same iterate.
+     */
+    std::vector<std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>>
+      mapped_gradients;
 
     /** Displacement increment of the step (full numbering, ghosted). */
     LinearAlgebra::distributed::Vector<double> increment;

@@ -79,6 +79,30 @@ namespace impm
             Tensor<4, 3>             &C) const = 0;
 
     /**
+     * @brief The material part of the previously converged tangent,
+     * @f$M_{ijkq} = \mathcal C_{imkl}\,\Delta F^{-1}_{ql}\,
+     * \Delta F^{-1}_{jm}@f$: the change of @f$\tau\,\Delta F^{-T}@f$ per
+     * unit change of @f$\Delta F_{kq}@f$ at fixed @f$\Delta F^{-T}@f$
+     * (formulation note, section 3), for indices below @p n_components.
+     *
+     * This default pulls @f$\mathcal C@f$ of tangent() back. A model that
+     * can differentiate its stress with respect to @f$\Delta F@f$ directly
+     * overrides it and saves the pull-back.
+     *
+     * @param result The last update.
+     * @param n_components 2 in plane strain, 3 in 3D.
+     * @param deformation_increment_inverse @f$\Delta F^{-1}@f$ (the
+     *   out-of-plane row and column are not read in plane strain).
+     * @param[out] M The tangent; entries with an index at or above
+     *   @p n_components are not set.
+     */
+    virtual void
+    pulled_back_tangent(const ConstitutiveUpdate &result,
+                        const unsigned int        n_components,
+                        const Tensor<2, 3>       &deformation_increment_inverse,
+                        Tensor<4, 3>             &M) const;
+
+    /**
      * @brief Whether the model can become plastic: an elastic model has no
      * plastic state to store or to write.
      */
@@ -129,6 +153,18 @@ namespace impm
             const unsigned int        n_components,
             Tensor<4, 3>             &C) const override;
 
+    /**
+     * @brief The pulled-back tangent without a pull-back: the principal-frame
+     * response is evaluated for perturbations of @f$\Delta F@f$ itself,
+     * @f$d(\Delta F) = e_k \otimes e_q@f$, and rotated back with
+     * @f$\Delta F^{-T}@f$ folded in, at the cost of tangent().
+     */
+    void
+    pulled_back_tangent(const ConstitutiveUpdate &result,
+                        const unsigned int        n_components,
+                        const Tensor<2, 3>       &deformation_increment_inverse,
+                        Tensor<4, 3>             &M) const override;
+
     bool
     is_plastic() const override;
 
@@ -137,6 +173,23 @@ namespace impm
 
     double
     elastic_modulus() const override;
+
+  private:
+    /**
+     * @brief The response to perturbations given in the principal frame of
+     * the trial strain: for the perturbation (k, l) the principal-frame
+     * gradient is @f$G'_{ab} = Q_{ka} R_{bl}@f$, and the result is
+     * @f$T_{imkl} = Q_{ia}\,d\tau'_{ab}\,R_{bm}@f$. tangent() uses
+     * @f$R = Q^T@f$, pulled_back_tangent() @f$R = Q^T \Delta F^{-T}@f$.
+     */
+    void
+    principal_response(const ConstitutiveUpdate &result,
+                       const unsigned int        n_components,
+                       const Tensor<2, 3>       &R,
+                       Tensor<4, 3>             &T) const;
+
+  public:
+    // The constants stay public: the unit tests check them.
 
     /** Lame's first parameter. */
     double lambda;

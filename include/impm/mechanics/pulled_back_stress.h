@@ -64,32 +64,22 @@ namespace impm
     }
 
     /**
-     * @brief The consistent tangent @f$A_{ijkq}@f$.
+     * @brief The consistent tangent @f$A_{ijkq}@f$ from the material part
+     * already pulled back (Material::pulled_back_tangent()):
+     * @f$A_{ijkq} = (M_{ijkq} - \tau_{im}\Delta F^{-1}_{qm}
+     * \Delta F^{-1}_{jk})/J_n@f$.
      *
-     * @param C The material tangent @f$d\tau = \mathcal C : G@f$,
-     *   @f$G = d(\Delta F)\,\Delta F^{-1}@f$.
+     * @param M @f$\mathcal C_{imkl}\Delta F^{-1}_{ql}\Delta F^{-1}_{jm}@f$.
      * @param tau Kirchhoff stress.
      * @param dF_inverse @f$\Delta F^{-1}@f$.
      * @param previous_jacobian @f$J_n@f$.
      */
     static Tensor<4, dim>
-    tangent(const Tensor<4, 3>          &C,
+    tangent(const Tensor<4, 3>          &M,
             const SymmetricTensor<2, 3> &tau,
             const Tensor<2, dim>        &dF_inverse,
             const double                 previous_jacobian)
     {
-      // C_imkl dFinv_ql first contracted over l, then over m with dFinv_jm.
-      Tensor<4, dim> Cq; // Cq[i][m][k][q] = C_imkl dFinv_ql
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int m = 0; m < dim; ++m)
-          for (unsigned int k = 0; k < dim; ++k)
-            for (unsigned int q = 0; q < dim; ++q)
-              {
-                double value = 0.;
-                for (unsigned int l = 0; l < dim; ++l)
-                  value += C[i][m][k][l] * dF_inverse[q][l];
-                Cq[i][m][k][q] = value;
-              }
       // tau dFinv^T: T[i][q] = tau_im dFinv_qm
       Tensor<2, dim> T;
       for (unsigned int i = 0; i < dim; ++i)
@@ -103,12 +93,59 @@ namespace impm
         for (unsigned int j = 0; j < dim; ++j)
           for (unsigned int k = 0; k < dim; ++k)
             for (unsigned int q = 0; q < dim; ++q)
-              {
-                double value = -T[i][q] * dF_inverse[j][k];
-                for (unsigned int m = 0; m < dim; ++m)
-                  value += Cq[i][m][k][q] * dF_inverse[j][m];
-                A[i][j][k][q] = scale * value;
-              }
+              A[i][j][k][q] =
+                scale * (M[i][j][k][q] - T[i][q] * dF_inverse[j][k]);
+      return A;
+    }
+
+    /**
+     * @brief @f$\tilde P\,V^n = \tau\,\Delta F^{-T} V^0@f$, the stress
+     * the assembly integrates: with @f$V^n = J_n V^0@f$ the @f$J_n@f$ of
+     * @f$\tilde P@f$ cancels, so it is never formed.
+     *
+     * @param tau Kirchhoff stress.
+     * @param dF_inverse @f$\Delta F^{-1}@f$.
+     * @param initial_volume @f$V^0@f$.
+     */
+    static Tensor<2, dim>
+    stress_times_volume(const SymmetricTensor<2, 3> &tau,
+                        const Tensor<2, dim>        &dF_inverse,
+                        const double                 initial_volume)
+    {
+      return stress(tau, dF_inverse, 1.) * initial_volume;
+    }
+
+    /**
+     * @brief @f$A\,V^n = (M_{ijkq} - \tau_{im}\Delta F^{-1}_{qm}
+     * \Delta F^{-1}_{jk})\,V^0@f$ (as for stress_times_volume(), @f$J_n@f$
+     * cancels).
+     *
+     * @param M The material part (Material::pulled_back_tangent()).
+     * @param tau Kirchhoff stress.
+     * @param dF_inverse @f$\Delta F^{-1}@f$.
+     * @param initial_volume @f$V^0@f$.
+     */
+    static Tensor<4, dim>
+    tangent_times_volume(const Tensor<4, 3>          &M,
+                         const SymmetricTensor<2, 3> &tau,
+                         const Tensor<2, dim>        &dF_inverse,
+                         const double                 initial_volume)
+    {
+      Tensor<2, dim> T; // V^0 tau dFinv^T
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int q = 0; q < dim; ++q)
+          {
+            for (unsigned int m = 0; m < dim; ++m)
+              T[i][q] += tau[i][m] * dF_inverse[q][m];
+            T[i][q] *= initial_volume;
+          }
+      Tensor<4, dim> A;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int q = 0; q < dim; ++q)
+              A[i][j][k][q] =
+                initial_volume * M[i][j][k][q] - T[i][q] * dF_inverse[j][k];
       return A;
     }
   };
