@@ -21,6 +21,7 @@
 
 #include <impm/core/mpm_solver.h>
 #include <impm/core/run.h>
+#include <impm/mechanics/equilibrium_forms.h>
 #include <impm/mechanics/pulled_back_stress.h>
 
 #include <algorithm>
@@ -549,10 +550,12 @@ namespace impm
           if (system_index[step.dofs[k]] != numbers::invalid_dof_index)
             entries.emplace_back(system_index[step.dofs[k]], k);
         std::sort(entries.begin(), entries.end());
+        group.in_system.assign(step.support.n_nodes * dim, 0);
         for (const auto &[row, k] : entries)
           {
             group.rows.push_back(row);
             group.local.push_back(k);
+            group.in_system[k] = 1;
           }
         // Points whose every DoF is constrained add nothing to the matrix.
         if (group.rows.empty())
@@ -786,48 +789,45 @@ namespace impm
     const bool         updated_lagrangian =
       parameters.solver.formulation == "updated Lagrangian";
     internal_force = 0.;
-    if (!updated_lagrangian)
-      for (const PointStep &step : point_steps)
-        {
-          // f_int = sum_p P~ grad S V^n with the start-of-step gradients
-          // as they are.
-          const Tensor<2, dim> stress =
-            PulledBackStress<dim>::stress_times_volume(
-              step.update.kirchhoff_stress,
+    // The updated Lagrangian form keeps its mapped gradients for the matrix
+    // of this iterate.
+    if (updated_lagrangian)
+      mapped_gradients.resize(point_steps.size());
+    std::array<double, PointSupport<dim>::max_nodes * dim> forces;
+    for (unsigned int p = 0; p < point_steps.size(); ++p)
+      {
+        const PointStep      &step = point_steps[p];
+        const Tensor<1, dim> *gradients;
+        Tensor<2, dim>        stress;
+        if (!updated_lagrangian)
+          {
+            gradients = step.support.gradients.data();
+            stress    = PreviouslyConvergedForm<dim>::force_stress(
+              step.update,
               step.deformation_increment_inverse,
               step.initial_volume);
-          for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-            {
-              const Tensor<1, dim> force = stress * step.support.gradients[v];
-              for (unsigned int i = 0; i < dim; ++i)
-                internal_force.local_element(step.dofs[v * dim + i]) +=
-                  force[i];
-            }
-        }
-    else
-      {
-        // f_int = sum_p sigma grad_x S V^{n+1} with the gradients mapped to
-        // the current configuration, grad_x S = grad S dF^-1 (kept for the
-        // matrix of this iterate), and sigma V^{n+1} = tau V^0.
-        mapped_gradients.resize(point_steps.size());
-        for (unsigned int p = 0; p < point_steps.size(); ++p)
-          {
-            const PointStep &step = point_steps[p];
-            Tensor<2, dim>   stress;
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                stress[i][j] =
-                  step.update.kirchhoff_stress[i][j] * step.initial_volume;
-            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-              {
-                mapped_gradients[p][v] = step.support.gradients[v] *
-                                         step.deformation_increment_inverse;
-                const Tensor<1, dim> force = stress * mapped_gradients[p][v];
-                for (unsigned int i = 0; i < dim; ++i)
-                  internal_force.local_element(step.dofs[v * dim + i]) +=
-                    force[i];
-              }
           }
+        else
+          {
+            UpdatedLagrangianForm<dim>::map_gradients(
+              step.support.gradients.data(),
+              step.support.n_nodes,
+              step.deformation_increment_inverse,
+              mapped_gradients[p].data());
+            gradients = mapped_gradients[p].data();
+            stress    = UpdatedLagrangianForm<dim>::force_stress(
+              step.update,
+              step.deformation_increment_inverse,
+              step.initial_volume);
+          }
+        const unsigned int n = step.support.n_nodes * dim;
+        std::fill(forces.begin(), forces.begin() + n, 0.);
+        add_point_forces(stress,
+                         gradients,
+                         step.support.n_nodes,
+                         forces.data());
+        for (unsigned int k = 0; k < n; ++k)
+          internal_force.local_element(step.dofs[k]) += forces[k];
       }
     // Ghost stabilisation acts on the displacement increment.
     Vector<double> face_increment, face_force;
@@ -865,74 +865,56 @@ namespace impm
     system_matrix                   = 0.;
     constexpr unsigned int max_dofs = PointSupport<dim>::max_nodes * dim;
     std::vector<double>    local_matrix(max_dofs * max_dofs);
-    Tensor<4, 3>           material_tangent;
     const bool             updated_lagrangian =
       parameters.solver.formulation == "updated Lagrangian";
+    std::array<double, max_dofs> row_values;
     for (const AssemblyGroup &group : assembly_groups)
       {
-        const unsigned int n = group.rows.size();
-        std::fill(local_matrix.begin(), local_matrix.begin() + n * n, 0.);
+        // The group's matrix over all its support's DoFs; the rows and
+        // columns in the linear system are picked when it is added.
+        const unsigned int n_nodes =
+          point_steps[group.points.front()].support.n_nodes;
+        const unsigned int n_all = n_nodes * dim;
+        std::fill(local_matrix.begin(),
+                  local_matrix.begin() + n_all * n_all,
+                  0.);
         for (const unsigned int p : group.points)
           {
             const PointStep &step = point_steps[p];
-            Tensor<4, dim>   A;
-            const std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>
-              *gradients = &step.support.gradients;
             if (!updated_lagrangian)
-              {
-                // A of eq. 10 with the start-of-step gradients, over V^n =
-                // J_n V^0; the model differentiates with respect to dF
-                // directly, so nothing is pulled back or mapped.
-                step.material->pulled_back_tangent(
-                  step.update,
-                  dim,
-                  PulledBackStress<dim>::embed(
-                    step.deformation_increment_inverse),
-                  material_tangent);
-                A = PulledBackStress<dim>::tangent_times_volume(
-                  material_tangent,
-                  step.update.kirchhoff_stress,
-                  step.deformation_increment_inverse,
-                  step.initial_volume);
-              }
+              add_point_stiffness(PreviouslyConvergedForm<dim>::tangent(
+                                    *step.material,
+                                    step.update,
+                                    step.deformation_increment_inverse,
+                                    step.initial_volume),
+                                  step.support.gradients.data(),
+                                  n_nodes,
+                                  group.in_system.data(),
+                                  local_matrix.data());
             else
-              {
-                // Spatial tangent a = C/J - sigma_il delta_jk over V^{n+1} =
-                // J V^0, with the mapped gradients of the residual.
-                step.material->tangent(step.update, dim, material_tangent);
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = 0; j < dim; ++j)
-                    for (unsigned int k = 0; k < dim; ++k)
-                      for (unsigned int l = 0; l < dim; ++l)
-                        A[i][j][k][l] =
-                          (material_tangent[i][j][k][l] -
-                           (j == k ? step.update.kirchhoff_stress[i][l] : 0.)) *
-                          step.initial_volume;
-                gradients = &mapped_gradients[p];
-              }
-
-            // B[i][k][q] = grad_v[j] A[i][j][k][q] for the row's node v,
-            // then K = B[k] grad_w.
-            for (unsigned int a = 0; a < n; ++a)
-              {
-                const unsigned int v = group.local[a] / dim,
-                                   i = group.local[a] % dim;
-                Tensor<2, dim> B;
-                for (unsigned int j = 0; j < dim; ++j)
-                  B += (*gradients)[v][j] * A[i][j];
-                double *row = &local_matrix[a * n];
-                for (unsigned int b = 0; b < n; ++b)
-                  row[b] += B[group.local[b] % dim] *
-                            (*gradients)[group.local[b] / dim];
-              }
+              add_point_stiffness(UpdatedLagrangianForm<dim>::tangent(
+                                    *step.material,
+                                    step.update,
+                                    step.deformation_increment_inverse,
+                                    step.initial_volume),
+                                  mapped_gradients[p].data(),
+                                  n_nodes,
+                                  group.in_system.data(),
+                                  local_matrix.data());
           }
+        const unsigned int n = group.rows.size();
         for (unsigned int a = 0; a < n; ++a)
-          system_matrix.add(group.rows[a],
-                            n,
-                            group.rows.data(),
-                            &local_matrix[a * n],
-                            /*elide_zero_values=*/false,
-                            /*col_indices_are_sorted=*/true);
+          {
+            const double *row = &local_matrix[group.local[a] * n_all];
+            for (unsigned int b = 0; b < n; ++b)
+              row_values[b] = row[group.local[b]];
+            system_matrix.add(group.rows[a],
+                              n,
+                              group.rows.data(),
+                              row_values.data(),
+                              /*elide_zero_values=*/false,
+                              /*col_indices_are_sorted=*/true);
+          }
       }
     for (const FacePenalty &face : ghost_faces)
       for (unsigned int i = 0; i < face.dofs.size(); ++i)

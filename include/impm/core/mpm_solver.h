@@ -102,6 +102,8 @@ namespace impm
       std::vector<unsigned int> local;
       /** Their indices in the linear system, ascending. */
       std::vector<types::global_dof_index> rows;
+      /** For each DoF of the support, whether it is in the linear system. */
+      std::vector<unsigned char> in_system;
     };
 
     /** A face penalty of ghost stabilisation, fixed during a load step. */

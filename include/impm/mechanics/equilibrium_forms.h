@@ -1,0 +1,192 @@
+#ifndef impm_mechanics_equilibrium_forms_h
+#define impm_mechanics_equilibrium_forms_h
+
+#include <deal.II/base/tensor.h>
+
+#include <impm/mechanics/material.h>
+#include <impm/mechanics/pulled_back_stress.h>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief One material point's integrands in the previously converged
+   * statement of equilibrium (the paper's eq. 9-10; formulation note,
+   * section 3): the stress @f$\tilde P V^n@f$ and the tangent
+   * @f$A V^n@f$ are contracted with the start-of-step gradients as they
+   * are, and the model differentiates its stress with respect to
+   * @f$\Delta F@f$ directly (Material::pulled_back_tangent()).
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  struct PreviouslyConvergedForm
+  {
+    /**
+     * @brief The stress that multiplies the gradients in the nodal forces,
+     * @f$\tilde P V^n = \tau \Delta F^{-T} V^0@f$.
+     */
+    static Tensor<2, dim>
+    force_stress(const ConstitutiveUpdate &update,
+                 const Tensor<2, dim>     &dF_inverse,
+                 const double              initial_volume)
+    {
+      return PulledBackStress<dim>::stress_times_volume(update.kirchhoff_stress,
+                                                        dF_inverse,
+                                                        initial_volume);
+    }
+
+    /**
+     * @brief The tangent that multiplies the gradients on both sides in the
+     * stiffness, @f$A V^n@f$.
+     */
+    static Tensor<4, dim>
+    tangent(const Material           &material,
+            const ConstitutiveUpdate &update,
+            const Tensor<2, dim>     &dF_inverse,
+            const double              initial_volume)
+    {
+      Tensor<4, 3> material_part;
+      material.pulled_back_tangent(update,
+                                   dim,
+                                   PulledBackStress<dim>::embed(dF_inverse),
+                                   material_part);
+      return PulledBackStress<dim>::tangent_times_volume(
+        material_part, update.kirchhoff_stress, dF_inverse, initial_volume);
+    }
+  };
+
+  /**
+   * @brief One material point's integrands in the updated Lagrangian
+   * statement (the paper's eq. 7-8; formulation note, section 4): the
+   * Cauchy stress over @f$V^{n+1}@f$, @f$\sigma V^{n+1} = \tau V^0@f$, and
+   * the spatial tangent, contracted with the gradients mapped to the current
+   * configuration, map_gradients(), in every iteration.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  struct UpdatedLagrangianForm
+  {
+    /**
+     * @brief @f$\partial S/\partial x_m = \partial S/\partial \tilde x_j
+     * \,\Delta F^{-1}_{jm}@f$ for @p n_nodes gradients.
+     */
+    static void
+    map_gradients(const Tensor<1, dim> *gradients,
+                  const unsigned int    n_nodes,
+                  const Tensor<2, dim> &dF_inverse,
+                  Tensor<1, dim>       *mapped_gradients)
+    {
+      for (unsigned int v = 0; v < n_nodes; ++v)
+        mapped_gradients[v] = gradients[v] * dF_inverse;
+    }
+
+    /**
+     * @brief The stress that multiplies the mapped gradients in the nodal
+     * forces, @f$\sigma V^{n+1} = \tau V^0@f$.
+     */
+    static Tensor<2, dim>
+    force_stress(const ConstitutiveUpdate &update,
+                 const Tensor<2, dim> & /*dF_inverse*/,
+                 const double initial_volume)
+    {
+      Tensor<2, dim> stress;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          stress[i][j] = update.kirchhoff_stress[i][j] * initial_volume;
+      return stress;
+    }
+
+    /**
+     * @brief The spatial tangent over the current volume,
+     * @f$a V^{n+1} = (\mathcal C_{ijkl} - \tau_{il}\delta_{jk}) V^0@f$.
+     */
+    static Tensor<4, dim>
+    tangent(const Material           &material,
+            const ConstitutiveUpdate &update,
+            const Tensor<2, dim> & /*dF_inverse*/,
+            const double initial_volume)
+    {
+      Tensor<4, 3> C;
+      material.tangent(update, dim, C);
+      Tensor<4, dim> a;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = 0; l < dim; ++l)
+              a[i][j][k][l] = (C[i][j][k][l] -
+                               (j == k ? update.kirchhoff_stress[i][l] : 0.)) *
+                              initial_volume;
+      return a;
+    }
+  };
+
+  /**
+   * @brief Add one point's nodal forces, @f$f_v += S\,\nabla S_v@f$, to
+   * @p forces (dim entries per node).
+   */
+  template <int dim>
+  inline void
+  add_point_forces(const Tensor<2, dim> &stress,
+                   const Tensor<1, dim> *gradients,
+                   const unsigned int    n_nodes,
+                   double               *forces)
+  {
+    for (unsigned int v = 0; v < n_nodes; ++v)
+      {
+        const Tensor<1, dim> force = stress * gradients[v];
+        for (unsigned int i = 0; i < dim; ++i)
+          forces[v * dim + i] += force[i];
+      }
+  }
+
+  /**
+   * @brief Add one point's stiffness,
+   * @f$K_{(v,i)(w,k)} += \nabla S_{v,j} A_{ijkq} \nabla S_{w,q}@f$, to the
+   * dense row-major matrix @p matrix of all its support's DoFs (size
+   * n x n, n = @p n_nodes * dim, DoF = node * dim + component). Rows whose
+   * @p rows_needed entry is zero (constrained DoFs) are skipped.
+   *
+   * The loops run node block by node block with the innermost over
+   * contiguous columns; the flops, @f$n_{nodes}\,d^4 + n_{nodes}^2 d^3@f$,
+   * are those of the contraction.
+   */
+  template <int dim>
+  inline void
+  add_point_stiffness(const Tensor<4, dim> &A,
+                      const Tensor<1, dim> *gradients,
+                      const unsigned int    n_nodes,
+                      const unsigned char  *rows_needed,
+                      double               *matrix)
+  {
+    const unsigned int n = n_nodes * dim;
+    for (unsigned int v = 0; v < n_nodes; ++v)
+      {
+        // B[i][k][q] = grad_v[j] A[i][j][k][q]
+        double B[dim][dim][dim] = {};
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int q = 0; q < dim; ++q)
+                B[i][k][q] += gradients[v][j] * A[i][j][k][q];
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            if (!rows_needed[v * dim + i])
+              continue;
+            double *row = matrix + (v * dim + i) * n;
+            for (unsigned int w = 0; w < n_nodes; ++w)
+              for (unsigned int k = 0; k < dim; ++k)
+                {
+                  double value = 0.;
+                  for (unsigned int q = 0; q < dim; ++q)
+                    value += B[i][k][q] * gradients[w][q];
+                  row[w * dim + k] += value;
+                }
+          }
+      }
+  }
+} // namespace impm
+
+#endif
