@@ -8,7 +8,8 @@
 #   3. formulation comparison: column, 64 cells, 2x2, GIMP, previously
 #      converged vs updated Lagrangian, 5 interleaved repetitions; the same
 #      on the collapse (h = 0.5 m, 6x6, 3 repetitions); then one Testing run
-#      of each column case for the equality check
+#      of each column case (16 significant digits) for the equality check;
+#      then build/impm-formulation-kernels, the per-point cost of each form
 #   4. collapse: h = 1, 0.5, 0.25 m x {3x3, 6x6}, point files of the initial
 #      and final state (kept in $STUDY_WORK, default build/study/)
 #   5. doc/scripts/plot_study.py (figures, tables into doc/benchmarks/README.md)
@@ -85,9 +86,19 @@ stage "formulation comparison: final points (Testing printout)"
 $study "$column" --column-cells 64 \
   --set "Solver/Formulation=previously converged|updated Lagrangian" \
   --set "Material points/Basis=GIMP" --set "Body 1/Points per cell direction=2" \
-  --set Output/Interval=0 \
+  --set Output/Interval=0 --set "Testing/Significant digits=16" \
   --points-out "$out/formulation_points.csv" --keep "$work/formulation" \
   --out "$work/formulation_testing.csv" --impm "$impm" || status=1
+
+stage "formulation kernels: per-point cost of each form"
+kernels=$(dirname "$impm")/impm-formulation-kernels
+if [ -x "$kernels" ]; then
+  "$kernels" > "$out/formulation_kernels.md" || status=1
+  cat "$out/formulation_kernels.md"
+else
+  echo "run_study.sh: no $kernels (cmake --build build builds it)" >&2
+  status=1
+fi
 
 stage "collapse: h = 1, 0.5, 0.25 m x 3x3, 6x6"
 $study "$collapse" \

@@ -315,6 +315,9 @@ def formulation_table(rows, rows_collapse, points, runs_dir):
                 identical += a[i][f] == b[i][f]
                 compared += 1
         max_rel = max_abs / scale
+        # Significant digits of the printout: those of a printed stress.
+        mantissa = str(points[0][fields[0]]).lower().split("e")[0].lstrip("-")
+        digits = len(mantissa.replace(".", "").lstrip("0")) or 1
         check.update(points_compared=len(common), points_only_in_one=len(set(a) ^ set(b)),
                      stress_fields=" ".join(fields), values_compared=compared,
                      printed_identical=identical, stress_scale_pa=scale,
@@ -331,8 +334,9 @@ def formulation_table(rows, rows_collapse, points, runs_dir):
                "stress)" if 0 < max_rel < 1e-10 else "") + ". "
             + ("**Equal to 1e-10 relative to the stress scale**" if max_rel <= 1e-10
                else "**NOT equal to 1e-10**")
-            + ", with the caveat that the printout has 6 significant digits: a difference "
-              "below about 1e-6 of a printed value cannot show in it.")
+            + (f" (printed with {digits} significant digits)." if digits >= 12 else
+               f", with the caveat that the printout has {digits} significant digits: a "
+               f"difference below about 1e-{digits} of a printed value cannot show in it."))
     if runs_dir:
         steps = {}
         for meta in glob.glob(os.path.join(runs_dir, "*", "study_case.json")):
@@ -344,21 +348,31 @@ def formulation_table(rows, rows_collapse, points, runs_dir):
         if "previously converged" in steps and "updated Lagrangian" in steps:
             sa, sb = steps["previously converged"], steps["updated Lagrangian"]
             max_rel = 0.0
+            max_abs_e = 0.0
             same_iterations = len(sa) == len(sb)
             for ra, rb in zip(sa, sb):
                 same_iterations &= ra["newton_iterations"] == rb["newton_iterations"]
                 ea, eb = float(ra["error_sigma_zz"]), float(rb["error_sigma_zz"])
                 max_rel = max(max_rel, abs(ea - eb) / max(abs(ea), 1e-300))
+                max_abs_e = max(max_abs_e, abs(ea - eb))
             check.update(steps_compared=min(len(sa), len(sb)),
                          same_newton_iterations_every_step=same_iterations,
-                         max_relative_difference_error_sigma_zz=max_rel)
+                         max_relative_difference_error_sigma_zz=max_rel,
+                         max_difference_error_sigma_zz=max_abs_e)
             out.append("")
+            # The error is |sigma - sigma_a| / |sigma_a|: the difference of two
+            # errors is a difference of stresses relative to |sigma_a| (a lower
+            # bound of it), while the difference relative to the error itself
+            # magnifies round-off by 1 / error.
             out.append(
                 f"The error of eq. 13 after each of the {min(len(sa), len(sb))} steps "
-                f"(steps.csv, 10 significant digits, a norm over all points' stresses): "
-                f"largest relative difference {max_rel:.1e} "
-                f"({'within' if max_rel <= 1e-10 else 'NOT within'} 1e-10); Newton iterations "
-                f"per step {'identical' if same_iterations else 'DIFFERENT'}.")
+                f"(steps.csv, 10 significant digits, |sigma - sigma_a| / |sigma_a| over all "
+                f"points): the two runs' errors differ by at most {max_abs_e:.1e} (a stress "
+                f"difference relative to |sigma_a|; "
+                f"{'within' if max_abs_e <= 1e-10 else 'NOT within'} 1e-10), "
+                f"{max_rel:.1e} relative to the error itself (which magnifies round-off by "
+                f"1 / error); Newton iterations per step "
+                f"{'identical' if same_iterations else 'DIFFERENT'}.")
     return "\n".join(out), check
 
 

@@ -1546,21 +1546,25 @@ namespace impm
                       reactions[c]);
         std::cout << buffer;
       }
+    const int digits = parameters.testing.significant_digits;
     for (const auto &[id, values] : all)
       {
         std::cout << "point " << id << ": X =";
         for (unsigned int d = 0; d < dim; ++d)
-          std::cout << ' ' << std::setprecision(6) << values[d];
+          std::cout << ' ' << std::setprecision(digits) << values[d];
         std::cout << ", u =";
-        char buffer[32];
+        char buffer[40];
         for (unsigned int d = 0; d < dim; ++d)
           {
-            std::snprintf(buffer, sizeof(buffer), " %.5e", values[dim + d]);
+            std::snprintf(
+              buffer, sizeof(buffer), " %.*e", digits - 1, values[dim + d]);
             std::cout << buffer;
           }
-        std::snprintf(buffer, sizeof(buffer), "%.5e", values[2 * dim]);
+        std::snprintf(
+          buffer, sizeof(buffer), "%.*e", digits - 1, values[2 * dim]);
         std::cout << ", sigma_vertical = " << buffer;
-        std::snprintf(buffer, sizeof(buffer), "%.5e", values[2 * dim + 1]);
+        std::snprintf(
+          buffer, sizeof(buffer), "%.*e", digits - 1, values[2 * dim + 1]);
         std::cout << ", sigma_xx = " << buffer << '\n';
       }
     std::cout << std::flush;

@@ -414,6 +414,13 @@ namespace impm
                         Patterns::Integer(0),
                         "Number of points, lowest ids first, whose final "
                         "state the test summary prints.");
+      prm.declare_entry("Significant digits",
+                        "6",
+                        Patterns::Integer(3, 17),
+                        "Significant digits of the printed points' position, "
+                        "displacement and stresses: few enough for the test "
+                        "suite to ignore round-off, up to 17 to compare two "
+                        "runs to full precision.");
       prm.declare_entry("Reference extent",
                         "",
                         Patterns::List(Patterns::Double(), 0, 3),
@@ -440,9 +447,10 @@ namespace impm
     Testing::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Testing");
-      enabled          = prm.get_bool("Enabled");
-      n_printed_points = prm.get_integer("Printed points");
-      reference_extent = Utilities::string_to_double(
+      enabled            = prm.get_bool("Enabled");
+      n_printed_points   = prm.get_integer("Printed points");
+      significant_digits = prm.get_integer("Significant digits");
+      reference_extent   = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Reference extent")));
       reference_tolerance = prm.get_double("Reference tolerance");
       probes.clear();

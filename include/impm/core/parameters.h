@@ -183,6 +183,8 @@ namespace impm
       bool enabled;
       /** Number of points (by id) whose state is printed at the end. */
       unsigned int n_printed_points;
+      /** Significant digits of the printed points' numbers. */
+      unsigned int significant_digits;
       /** Expected upper corner of the final points' bounding box (empty:
        * none), e.g. from a run with other settings. */
       std::vector<double> reference_extent;
