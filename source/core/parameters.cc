@@ -223,7 +223,8 @@ namespace impm
                         "the start-of-step grid) or updated Lagrangian "
                         "(eq. 7-8: Cauchy stress with the basis gradients "
                         "mapped to the current configuration in every "
-                        "iteration). Both give the same iterates. The "
+                        "iteration). Both give the same iterates up to "
+                        "round-off. The "
                         "paper reports about 5 % less time for the first; "
                         "here both cost the same within the measurement "
                         "scatter (doc/benchmarks).");
