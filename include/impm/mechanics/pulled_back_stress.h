@@ -80,22 +80,8 @@ namespace impm
             const Tensor<2, dim>        &dF_inverse,
             const double                 previous_jacobian)
     {
-      // tau dFinv^T: T[i][q] = tau_im dFinv_qm
-      Tensor<2, dim> T;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int q = 0; q < dim; ++q)
-          for (unsigned int m = 0; m < dim; ++m)
-            T[i][q] += tau[i][m] * dF_inverse[q][m];
-
-      const double   scale = 1. / previous_jacobian;
-      Tensor<4, dim> A;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          for (unsigned int k = 0; k < dim; ++k)
-            for (unsigned int q = 0; q < dim; ++q)
-              A[i][j][k][q] =
-                scale * (M[i][j][k][q] - T[i][q] * dF_inverse[j][k]);
-      return A;
+      // A = (A V^n) / V^n: the product with V^0 replaced by 1 / J_n.
+      return tangent_times_volume(M, tau, dF_inverse, 1. / previous_jacobian);
     }
 
     /**
