@@ -24,7 +24,7 @@ and writes into the same directory
 and, with --readme, replaces the blocks between
   <!-- BEGIN NAME --> and <!-- END NAME -->
 of that Markdown file by the tables (NAME = column-table, formulation-table,
-collapse-table, machine).  --formulation-runs names the directory where
+collapse-table, formulation-kernels, machine).  --formulation-runs names the directory where
 study.py --keep put the two Testing runs of the formulation comparison; their
 steps.csv (error_sigma_zz of every step, 10 significant digits) are compared
 too.
@@ -474,6 +474,11 @@ def main():
     if collapse:
         blocks["collapse-table"] = collapse_table(collapse)
         blocks["collapse-phases"] = phases_table(collapse, "collapse")
+    kernels = os.path.join(d, "formulation_kernels.md")
+    if os.path.exists(kernels):
+        # The table of build/impm-formulation-kernels, as it printed it.
+        blocks["formulation-kernels"] = "\n".join(
+            line.rstrip() for line in open(kernels) if line.startswith("|"))
     machine = os.path.join(d, "machine.txt")
     if os.path.exists(machine):
         blocks["machine"] = "```\n" + open(machine).read().rstrip() + "\n```"

@@ -715,10 +715,10 @@ namespace impm
           }
         step.deformation_increment_inverse = invert(dF);
         const auto properties              = point.get_properties();
-        material_of(properties)
-          .update(PulledBackStress<dim>::embed(dF),
-                  read_symmetric(properties, P::elastic_left_cauchy_green),
-                  step.update);
+        step.material->update(PulledBackStress<dim>::embed(dF),
+                              read_symmetric(properties,
+                                             P::elastic_left_cauchy_green),
+                              step.update);
       }
     return Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1;
   }
