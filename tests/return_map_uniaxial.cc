@@ -139,8 +139,8 @@ main()
   const double         E = 1e6, nu = 0.3, rho_y = 2e4;
   const HenckyVonMises material(E, nu, rho_y);
   std::cout << "Hencky/von Mises, E = 1e6, nu = 0.3, rho_y = 2e4" << std::endl;
-  compare("lambda", material.lambda, 576923.076923);
-  compare("mu", material.mu, 384615.384615);
+  compare("lambda", material.lame_first_parameter(), 576923.076923);
+  compare("mu", material.shear_modulus(), 384615.384615);
 
   const SymmetricTensor<2, 3> I = unit_symmetric_tensor<3>();
 
@@ -185,10 +185,10 @@ main()
     SymmetricTensor<2, 3> eps_trial;
     eps_trial[0][0]                       = e;
     const SymmetricTensor<2, 3> dev_trial = deviator(eps_trial);
-    const double                rho_trial = 2. * material.mu * dev_trial.norm();
+    const double                rho_trial = 2. * material.shear_modulus() * dev_trial.norm();
     const SymmetricTensor<2, 3> n         = dev_trial / dev_trial.norm();
-    const double p_trial = trace(material.lambda * trace(eps_trial) * I +
-                                 2. * material.mu * eps_trial) /
+    const double p_trial = trace(material.lame_first_parameter() * trace(eps_trial) * I +
+                                 2. * material.shear_modulus() * eps_trial) /
                            3.;
     compare("rho_tr", rho_trial, 31403.7146511);
     compare("return ratio", result.return_ratio, 0.636867333124);
@@ -198,7 +198,7 @@ main()
     compare("plastic multiplier", result.plastic_multiplier, 0.0148248290464);
     compare("plastic multiplier vs (rho_tr - rho_y)/(2 mu)",
             result.plastic_multiplier,
-            (rho_trial - rho_y) / (2. * material.mu));
+            (rho_trial - rho_y) / (2. * material.shear_modulus()));
     compare("tau_11", tau[0][0], -57996.5982852);
     compare("tau_22", tau[1][1], -33501.7008574);
     compare("tau_33", tau[2][2], -33501.7008574);

@@ -66,16 +66,17 @@ namespace impm
   {
     name = "Body " + std::to_string(number);
     prm.enter_subsection(name);
-    shape = prm.get("Shape");
-    if ((shape == "disc" || shape == "polygon") && dim != 2)
-      throw std::invalid_argument("Parameter '" + name + "/Shape' = '" + shape +
-                                  "' is not allowed in " + std::to_string(dim) +
-                                  "D: use box or sphere.");
-    if (shape == "sphere" && dim != 3)
-      throw std::invalid_argument("Parameter '" + name +
-                                  "/Shape' = 'sphere' is not allowed in 2D: "
-                                  "use box, disc or polygon.");
-    if (shape == "box")
+    shape = static_cast<Shape>(Parameters::selection_index(
+      shape_names, name + "/Shape", prm.get("Shape")));
+    if ((shape == Shape::disc || shape == Shape::polygon) && dim != 2)
+      Parameters::bad_value(name + "/Shape",
+                            prm.get("Shape"),
+                            "in 3D only box or sphere.");
+    if (shape == Shape::sphere && dim != 3)
+      Parameters::bad_value(name + "/Shape",
+                            "sphere",
+                            "in 2D only box, disc or polygon.");
+    if (shape == Shape::box)
       {
         const auto lower =
           Parameters::get_vector(prm, name, "Lower corner", dim);
@@ -86,46 +87,39 @@ namespace impm
             lower_corner[d] = lower[d];
             upper_corner[d] = upper[d];
             if (!(upper[d] > lower[d]))
-              throw std::invalid_argument(
-                "Parameter '" + name + "/Upper corner' = '" +
-                prm.get("Upper corner") +
-                "' is not allowed: each coordinate must exceed that of "
-                "'Lower corner' (" +
-                prm.get("Lower corner") + ").");
+              Parameters::bad_value(
+                name + "/Upper corner",
+                prm.get("Upper corner"),
+                "each coordinate must exceed that of 'Lower corner' (" +
+                  prm.get("Lower corner") + ").");
           }
       }
-    else if (shape == "disc" || shape == "sphere")
+    else if (shape == Shape::disc || shape == Shape::sphere)
       {
         const auto c = Parameters::get_vector(prm, name, "Center", dim);
         for (unsigned int d = 0; d < dim; ++d)
           center[d] = c[d];
         radius = prm.get_double("Radius");
         if (!(radius > 0.))
-          throw std::invalid_argument("Parameter '" + name + "/Radius' = '" +
-                                      prm.get("Radius") +
-                                      "' is not allowed: it must be > 0.");
+          Parameters::bad_value(name + "/Radius",
+                                prm.get("Radius"),
+                                "it must be > 0.");
       }
     else
       {
         vertices.clear();
-        for (const auto &vertex :
-             Utilities::split_string_list(prm.get("Vertices"), ';'))
+        for (const auto &xy :
+             Parameters::get_point_list(prm, name, "Vertices", 2))
           {
-            const auto xy =
-              Utilities::string_to_double(Utilities::split_string_list(vertex));
-            if (xy.size() != 2)
-              throw std::invalid_argument(
-                "Parameter '" + name + "/Vertices' = '" + prm.get("Vertices") +
-                "' is not allowed: each vertex needs two coordinates.");
             Point<dim> p;
             p[0] = xy[0];
             p[1] = xy[1];
             vertices.push_back(p);
           }
         if (vertices.size() < 3)
-          throw std::invalid_argument(
-            "Parameter '" + name + "/Vertices' = '" + prm.get("Vertices") +
-            "' is not allowed: a polygon needs at least three vertices.");
+          Parameters::bad_value(name + "/Vertices",
+                                prm.get("Vertices"),
+                                "a polygon needs at least three vertices.");
       }
     points_per_direction = prm.get_integer("Points per cell direction");
     density              = prm.get_double("Density");
@@ -141,14 +135,14 @@ namespace impm
   bool
   Body<dim>::contains(const Point<dim> &x) const
   {
-    if (shape == "box")
+    if (shape == Shape::box)
       {
         for (unsigned int d = 0; d < dim; ++d)
           if (!(x[d] > lower_corner[d] && x[d] < upper_corner[d]))
             return false;
         return true;
       }
-    if (shape == "disc" || shape == "sphere")
+    if (shape == Shape::disc || shape == Shape::sphere)
       return x.distance(center) < radius;
     // Polygon: even-odd rule.
     bool inside = false;
@@ -170,10 +164,10 @@ namespace impm
   Body<dim>::description() const
   {
     std::ostringstream out;
-    out << name << ": " << shape;
-    if (shape == "box")
+    out << name << ": " << shape_names[static_cast<unsigned int>(shape)];
+    if (shape == Shape::box)
       out << " [" << lower_corner << "] - [" << upper_corner << "]";
-    else if (shape == "polygon")
+    else if (shape == Shape::polygon)
       out << " with " << vertices.size() << " vertices";
     else
       out << " centre (" << center << ") radius " << radius;

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.templates.h>
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/names.h>
 #include <impm/core/effects.h>
 #include <impm/core/parameters.h>
 
@@ -23,44 +24,23 @@ namespace impm
 
   namespace EffectRegistry
   {
-    namespace
+    void
+    declare_enabled(ParameterHandler &prm, const bool enabled_by_default)
     {
-      template <int dim>
-      std::vector<Entry<dim>> &
-      registry()
-      {
-        static std::vector<Entry<dim>> list;
-        return list;
-      }
-    } // namespace
-
-    template <int dim>
-    bool
-    register_effect(const Entry<dim> &entry)
-    {
-      registry<dim>().push_back(entry);
-      return true;
-    }
-
-    template <int dim>
-    const std::vector<Entry<dim>> &
-    entries()
-    {
-      return registry<dim>();
+      prm.declare_entry("Enabled",
+                        enabled_by_default ? "true" : "false",
+                        Patterns::Bool(),
+                        "Whether the scene applies this effect. An "
+                        "effect that is off is not created and costs "
+                        "nothing.");
     }
 
     void
     declare_parameters(ParameterHandler &prm)
     {
-      for (const auto &entry : entries<2>())
+      for (const auto &entry : ForceEffectList<2>::entries())
         {
           prm.enter_subsection(entry.name);
-          prm.declare_entry("Enabled",
-                            entry.enabled_by_default ? "true" : "false",
-                            Patterns::Bool(),
-                            "Whether the scene applies this effect. An "
-                            "effect that is off is not created and costs "
-                            "nothing.");
           entry.declare_parameters(prm);
           prm.leave_subsection();
         }
@@ -71,7 +51,7 @@ namespace impm
     create_enabled(ParameterHandler &prm)
     {
       std::vector<std::unique_ptr<ForceEffect<dim>>> effects;
-      for (const auto &entry : entries<dim>())
+      for (const auto &entry : ForceEffectList<dim>::entries())
         {
           prm.enter_subsection(entry.name);
           if (prm.get_bool("Enabled"))
@@ -181,17 +161,9 @@ namespace impm
       explicit PointLoad(ParameterHandler &prm)
         : force(get_tensor<dim>(prm, "Point load", "Force"))
       {
-        for (const auto &position :
-             Utilities::split_string_list(prm.get("Positions"), ';'))
+        for (const auto &xyz :
+             Parameters::get_point_list(prm, "Point load", "Positions", dim))
           {
-            const auto xyz = Utilities::string_to_double(
-              Utilities::split_string_list(position));
-            if (xyz.size() != dim)
-              throw std::invalid_argument(
-                "Parameter 'Point load/Positions' = '" + prm.get("Positions") +
-                "' is not allowed: each position "
-                "needs " +
-                std::to_string(dim) + " coordinates.");
             Point<dim> p;
             for (unsigned int d = 0; d < dim; ++d)
               p[d] = xyz[d];
@@ -294,32 +266,30 @@ namespace impm
 
       explicit Traction(ParameterHandler &prm)
         : body(prm.get_integer("Body") - 1)
-        , boundary(prm.get("Boundary"))
+        , boundary(Names::face_from_name(prm.get("Boundary")))
         , traction(get_tensor<dim>(prm, "Traction", "Traction"))
       {
-        const auto lower = Utilities::string_to_double(
-          Utilities::split_string_list(prm.get("Region lower corner")));
-        const auto upper = Utilities::string_to_double(
-          Utilities::split_string_list(prm.get("Region upper corner")));
-        if (lower.size() != upper.size() ||
-            (!lower.empty() && lower.size() != dim))
-          throw std::invalid_argument(
-            "Parameters 'Traction/Region lower corner' = '" +
-            prm.get("Region lower corner") + "' and 'Region upper corner' = '" +
-            prm.get("Region upper corner") +
-            "' are not allowed: give both with one coordinate per dimension, "
-            "or neither.");
+        const auto lower = Parameters::get_optional_vector(
+          prm, "Traction", "Region lower corner", dim);
+        const auto upper = Parameters::get_optional_vector(
+          prm, "Traction", "Region upper corner", dim);
+        if (lower.size() != upper.size())
+          Parameters::bad_value("Traction/Region upper corner",
+                                prm.get("Region upper corner"),
+                                "give both corners of the region, or "
+                                "neither.");
         for (unsigned int d = 0; d < lower.size(); ++d)
           {
             region_lower[d] = lower[d];
             region_upper[d] = upper[d];
           }
-        has_region                   = !lower.empty();
-        const unsigned int direction = boundary[0] - 'x';
-        if (direction >= dim)
-          throw std::invalid_argument("Parameter 'Traction/Boundary' = '" +
-                                      boundary + "' is not allowed in " +
-                                      std::to_string(dim) + "D.");
+        has_region = !lower.empty();
+        if (boundary >= 2 * dim)
+          Parameters::bad_value("Traction/Boundary",
+                                prm.get("Boundary"),
+                                "in " + std::to_string(dim) +
+                                  "D only x-, x+, y-, y+" +
+                                  (dim == 3 ? ", z-, z+." : "."));
       }
 
       void
@@ -333,8 +303,8 @@ namespace impm
             "Parameter 'Traction/Body' = " + std::to_string(body + 1) +
             " is not allowed: the scene has " + std::to_string(bodies.size()) +
             " bodies.");
-        const unsigned int direction = boundary[0] - 'x';
-        const double       sign      = boundary[1] == '+' ? 1. : -1.;
+        const unsigned int direction = Names::face_axis(boundary);
+        const double       sign      = Names::face_sign(boundary);
         Tensor<1, dim>     spacing;
         for (unsigned int d = 0; d < dim; ++d)
           spacing[d] = grid.cell_size[d] / bodies[body].points_per_direction;
@@ -365,7 +335,7 @@ namespace impm
         if (n_points == 0)
           throw std::invalid_argument(
             "Traction: no material point of Body " + std::to_string(body + 1) +
-            " lies on its " + boundary + " boundary" +
+            " lies on its " + Names::face(boundary) + " boundary" +
             (has_region ? " inside the region" : "") + ".");
         total_area = Utilities::MPI::sum(areas.size() * area, communicator);
       }
@@ -388,7 +358,7 @@ namespace impm
       {
         std::ostringstream out;
         out << "traction: (" << to_string(traction) << ") Pa on the "
-            << boundary << " side of Body " << body + 1;
+            << Names::face(boundary) << " side of Body " << body + 1;
         if (n_points > 0)
           out << " (" << n_points << " points, area " << total_area << ")";
         return out.str();
@@ -396,7 +366,7 @@ namespace impm
 
     private:
       const unsigned int                        body;
-      const std::string                         boundary;
+      const unsigned int                        boundary;
       const Tensor<1, dim>                      traction;
       Point<dim>                                region_lower;
       Point<dim>                                region_upper;
@@ -415,14 +385,6 @@ namespace impm
   template class ForceEffect<3>;
   namespace EffectRegistry
   {
-    template bool
-    register_effect<2>(const Entry<2> &);
-    template bool
-    register_effect<3>(const Entry<3> &);
-    template const std::vector<Entry<2>> &
-    entries<2>();
-    template const std::vector<Entry<3>> &
-    entries<3>();
     template std::vector<std::unique_ptr<ForceEffect<2>>>
     create_enabled<2>(ParameterHandler &);
     template std::vector<std::unique_ptr<ForceEffect<3>>>

@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/names.h>
 #include <impm/core/effects.h>
 #include <impm/core/parameters.h>
 #include <impm/mechanics/material.h>
@@ -11,18 +12,56 @@ namespace impm
 {
   namespace Parameters
   {
-    namespace
+    void
+    bad_value(const std::string &entry,
+              const std::string &value,
+              const std::string &allowed)
     {
-      /** Error for an entry whose value is out of its allowed range. */
-      [[noreturn]] void
-      bad_value(const std::string &entry,
-                const std::string &value,
-                const std::string &allowed)
-      {
-        throw std::invalid_argument("Parameter '" + entry + "' = '" + value +
-                                    "' is not allowed: " + allowed);
-      }
-    } // namespace
+      throw std::invalid_argument("Parameter '" + entry + "' = '" + value +
+                                  "' is not allowed: " + allowed);
+    }
+
+
+
+    std::vector<double>
+    get_optional_vector(const ParameterHandler &prm,
+                        const std::string      &section,
+                        const std::string      &entry,
+                        const unsigned int      n)
+    {
+      const std::string         value = prm.get(entry);
+      const std::vector<double> numbers =
+        Utilities::string_to_double(Utilities::split_string_list(value));
+      if (!numbers.empty() && numbers.size() != n)
+        bad_value(section + "/" + entry,
+                  value,
+                  "it needs " + std::to_string(n) +
+                    " comma-separated numbers, or none.");
+      return numbers;
+    }
+
+
+
+    std::vector<std::vector<double>>
+    get_point_list(const ParameterHandler &prm,
+                   const std::string      &section,
+                   const std::string      &entry,
+                   const unsigned int      n)
+    {
+      const std::string                value = prm.get(entry);
+      std::vector<std::vector<double>> points;
+      for (const auto &point : Utilities::split_string_list(value, ';'))
+        {
+          points.push_back(
+            Utilities::string_to_double(Utilities::split_string_list(point)));
+          if (points.back().size() != n)
+            bad_value(section + "/" + entry,
+                      value,
+                      "each position 'x, y; x, y; ...' needs " +
+                        std::to_string(n) + " coordinates.");
+        }
+      return points;
+    }
 
 
 
@@ -93,8 +132,7 @@ namespace impm
                         "1, 16",
                         Patterns::List(Patterns::Integer(1), 2, 3),
                         "Number of cells in each direction (>= 1).");
-      const char *faces[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
-      for (const char *face : faces)
+      for (const char *face : Names::faces)
         {
           prm.declare_entry(
             std::string("Condition ") + face,
@@ -146,30 +184,24 @@ namespace impm
                       "each coordinate must exceed that of 'Lower corner' (" +
                         prm.get("Lower corner") + ").");
         }
-      const char *faces[] = {"x-", "x+", "y-", "y+", "z-", "z+"};
       for (unsigned int f = 0; f < 2 * dim; ++f)
         {
-          face_conditions[f]    = prm.get(std::string("Condition ") + faces[f]);
+          const std::string face = Names::face(f);
+          face_conditions[f]     = static_cast<FaceCondition>(
+            selection_index(face_condition_names,
+                            "Grid/Condition " + face,
+                            prm.get("Condition " + face)));
           face_displacements[f] = 0;
-          if (face_conditions[f].rfind("prescribed", 0) == 0)
+          if (is_prescribed(face_conditions[f]))
             {
-              const auto u = get_vector(prm,
-                                        "Grid",
-                                        std::string("Displacement ") + faces[f],
-                                        dim);
+              const auto u =
+                get_vector(prm, "Grid", "Displacement " + face, dim);
               for (unsigned int d = 0; d < dim; ++d)
                 face_displacements[f][d] = u[d];
             }
-          const std::string region_entry = std::string("Region ") + faces[f];
-          const auto        region       = Utilities::string_to_double(
-            Utilities::split_string_list(prm.get(region_entry)));
+          const auto region =
+            get_optional_vector(prm, "Grid", "Region " + face, 2 * dim);
           face_has_region[f] = !region.empty();
-          if (!region.empty() && region.size() != 2 * dim)
-            bad_value("Grid/" + region_entry,
-                      prm.get(region_entry),
-                      "it needs " + std::to_string(2 * dim) +
-                        " numbers (lower corner, then upper corner) or "
-                        "none.");
           for (unsigned int d = 0; d < dim && face_has_region[f]; ++d)
             {
               face_regions[f].first[d]  = region[d];
@@ -203,7 +235,7 @@ namespace impm
     MaterialPoints::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Material points");
-      basis          = prm.get("Basis");
+      basis          = basis_type_from_string(prm.get("Basis"));
       update_domains = prm.get_bool("Update domains");
       prm.leave_subsection();
     }
@@ -300,11 +332,15 @@ namespace impm
     Solver::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
-      formulation             = prm.get("Formulation");
+      formulation             = static_cast<Formulation>(selection_index(
+        formulation_names, "Solver/Formulation", prm.get("Formulation")));
       n_load_steps            = prm.get_integer("Load steps");
       tolerance               = prm.get_double("Tolerance");
       max_iterations          = prm.get_integer("Maximum iterations");
-      linear_solver           = prm.get("Linear solver");
+      linear_solver           = static_cast<LinearSolverType>(
+        selection_index(linear_solver_names,
+                        "Solver/Linear solver",
+                        prm.get("Linear solver")));
       linear_tolerance        = prm.get_double("Linear tolerance");
       step_control            = prm.get_bool("Step control");
       minimum_step            = prm.get_double("Minimum load step");
@@ -393,8 +429,25 @@ namespace impm
     {
       prm.enter_subsection("Output");
       interval            = prm.get_integer("Interval");
-      analytical_solution = prm.get("Analytical solution");
-      fields              = Utilities::split_string_list(prm.get("Fields"));
+      analytical_solution = static_cast<AnalyticalSolution>(
+        selection_index(analytical_solution_names,
+                        "Output/Analytical solution",
+                        prm.get("Analytical solution")));
+      const auto names  = Utilities::split_string_list(prm.get("Fields"));
+      const auto wanted = [&names](const std::string &field) {
+        for (const auto &name : names)
+          if (name == "all" || name == field)
+            return true;
+        return false;
+      };
+      fields.displacement       = wanted("displacement");
+      fields.initial_position   = wanted("initial_position");
+      fields.stress             = wanted("stress");
+      fields.von_mises_stress   = wanted("von_mises_stress");
+      fields.plastic_multiplier = wanted("plastic_multiplier");
+      fields.volume             = wanted("volume");
+      fields.rank               = wanted("rank");
+      fields.body               = wanted("body");
       prm.leave_subsection();
     }
 
@@ -445,20 +498,17 @@ namespace impm
     }
 
     void
-    Testing::parse_parameters(ParameterHandler &prm)
+    Testing::parse_parameters(ParameterHandler  &prm,
+                              const unsigned int dimension)
     {
       prm.enter_subsection("Testing");
       enabled            = prm.get_bool("Enabled");
       n_printed_points   = prm.get_integer("Printed points");
       significant_digits = prm.get_integer("Significant digits");
-      reference_extent   = Utilities::string_to_double(
-        Utilities::split_string_list(prm.get("Reference extent")));
+      reference_extent =
+        get_optional_vector(prm, "Testing", "Reference extent", dimension);
       reference_tolerance = prm.get_double("Reference tolerance");
-      probes.clear();
-      for (const auto &probe :
-           Utilities::split_string_list(prm.get("Probes"), ';'))
-        probes.push_back(
-          Utilities::string_to_double(Utilities::split_string_list(probe)));
+      probes              = get_point_list(prm, "Testing", "Probes", dimension);
       prm.leave_subsection();
     }
 
@@ -484,7 +534,7 @@ namespace impm
       solver.parse_parameters(prm);
       stabilisation.parse_parameters(prm);
       output.parse_parameters(prm);
-      testing.parse_parameters(prm);
+      testing.parse_parameters(prm, dim);
     }
 
 

@@ -1,5 +1,7 @@
 #include <impm/mechanics/material.h>
 
+#include <stdexcept>
+
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -266,109 +268,85 @@ namespace impm
 
 
 
+  namespace
+  {
+    void
+    declare_elastic_constants(ParameterHandler &prm)
+    {
+      prm.declare_entry("Young's modulus",
+                        "1e6",
+                        Patterns::Double(0.,
+                                         Patterns::Double::max_double_value),
+                        "Young's modulus E in Pa (> 0).");
+      prm.declare_entry("Poisson's ratio",
+                        "0",
+                        Patterns::Double(-0.999, 0.4999),
+                        "Poisson's ratio, in [-0.999, 0.4999].");
+    }
+
+    /** Parse and check E and nu, naming the parameter on bad input. */
+    std::pair<double, double>
+    parse_elastic_constants(ParameterHandler &prm)
+    {
+      const double E  = prm.get_double("Young's modulus");
+      const double nu = prm.get_double("Poisson's ratio");
+      if (!(E > 0.))
+        throw std::invalid_argument("Parameter 'Young's modulus' = '" +
+                                    prm.get("Young's modulus") +
+                                    "' is not allowed: it must be > 0.");
+      return {E, nu};
+    }
+
+    const bool hencky_registered = MaterialList::register_plugin(
+      {"Hencky elastic",
+       "Hencky elasticity",
+       [](ParameterHandler &prm) { declare_elastic_constants(prm); },
+       [](ParameterHandler &prm) -> std::unique_ptr<Material> {
+         const auto [E, nu] = parse_elastic_constants(prm);
+         return std::make_unique<HenckyVonMises>(
+           E, nu, std::numeric_limits<double>::infinity());
+       }});
+
+    const bool von_mises_registered = MaterialList::register_plugin(
+      {"von Mises",
+       "Hencky elasticity with von Mises perfect plasticity",
+       [](ParameterHandler &prm) {
+         declare_elastic_constants(prm);
+         prm.declare_entry(
+           "Yield stress",
+           "2e4",
+           Patterns::Double(0., Patterns::Double::max_double_value),
+           "Yield strength rho_y = sqrt(2 J2) at yield, in Pa (> 0). "
+           "Perfect plasticity.");
+       },
+       [](ParameterHandler &prm) -> std::unique_ptr<Material> {
+         const auto [E, nu]        = parse_elastic_constants(prm);
+         const double yield_stress = prm.get_double("Yield stress");
+         if (!(yield_stress > 0.))
+           throw std::invalid_argument("Parameter 'Yield stress' = '" +
+                                       prm.get("Yield stress") +
+                                       "' is not allowed: it must be > 0.");
+         return std::make_unique<HenckyVonMises>(E, nu, yield_stress);
+       }});
+  } // namespace
+
+
+
   namespace MaterialRegistry
   {
-    namespace
-    {
-      std::vector<Entry> &
-      registry()
-      {
-        static std::vector<Entry> list;
-        return list;
-      }
-
-      void
-      declare_elastic_constants(ParameterHandler &prm)
-      {
-        prm.declare_entry("Young's modulus",
-                          "1e6",
-                          Patterns::Double(0.,
-                                           Patterns::Double::max_double_value),
-                          "Young's modulus E in Pa (> 0).");
-        prm.declare_entry("Poisson's ratio",
-                          "0",
-                          Patterns::Double(-0.999, 0.4999),
-                          "Poisson's ratio, in [-0.999, 0.4999].");
-      }
-
-      /** Parse and check E and nu, naming the parameter on bad input. */
-      std::pair<double, double>
-      parse_elastic_constants(ParameterHandler &prm)
-      {
-        const double E  = prm.get_double("Young's modulus");
-        const double nu = prm.get_double("Poisson's ratio");
-        AssertThrow(E > 0.,
-                    ExcMessage(
-                      "Parameter 'Young's modulus' = " + std::to_string(E) +
-                      " is out of range: it must be > 0."));
-        return {E, nu};
-      }
-
-      const bool hencky_registered = register_material(
-        {"Hencky elastic",
-         [](ParameterHandler &prm) { declare_elastic_constants(prm); },
-         [](ParameterHandler &prm) -> std::unique_ptr<Material> {
-           const auto [E, nu] = parse_elastic_constants(prm);
-           return std::make_unique<HenckyVonMises>(
-             E, nu, std::numeric_limits<double>::infinity());
-         }});
-
-      const bool von_mises_registered = register_material(
-        {"von Mises",
-         [](ParameterHandler &prm) {
-           declare_elastic_constants(prm);
-           prm.declare_entry(
-             "Yield stress",
-             "2e4",
-             Patterns::Double(0., Patterns::Double::max_double_value),
-             "Yield strength rho_y = sqrt(2 J2) at yield, in Pa (> 0). "
-             "Perfect plasticity.");
-         },
-         [](ParameterHandler &prm) -> std::unique_ptr<Material> {
-           const auto [E, nu]        = parse_elastic_constants(prm);
-           const double yield_stress = prm.get_double("Yield stress");
-           AssertThrow(yield_stress > 0.,
-                       ExcMessage("Parameter 'Yield stress' = " +
-                                  std::to_string(yield_stress) +
-                                  " is out of range: it must be > 0."));
-           return std::make_unique<HenckyVonMises>(E, nu, yield_stress);
-         }});
-    } // namespace
-
-    bool
-    register_material(const Entry &entry)
-    {
-      registry().push_back(entry);
-      return true;
-    }
-
-    const std::vector<Entry> &
-    entries()
-    {
-      (void)hencky_registered;
-      (void)von_mises_registered;
-      return registry();
-    }
-
-    std::string
-    names()
-    {
-      std::string list;
-      for (const auto &entry : entries())
-        list += (list.empty() ? "" : "|") + entry.name;
-      return list;
-    }
-
     void
     declare_parameters(ParameterHandler &prm)
     {
+      (void)hencky_registered;
+      (void)von_mises_registered;
       prm.declare_entry("Model",
                         "von Mises",
-                        Patterns::Selection(names()),
-                        "The constitutive model. Known models: " + names() +
+                        Patterns::Selection(MaterialList::names()),
+                        "The constitutive model. Known models: " +
+                          MaterialList::names() +
                           ". Its parameters are in the subsection of the "
                           "same name.");
-      for (const auto &entry : entries())
+      for (const auto &entry : MaterialList::entries())
         {
           prm.enter_subsection(entry.name);
           entry.declare_parameters(prm);
@@ -379,19 +357,11 @@ namespace impm
     std::unique_ptr<Material>
     create(ParameterHandler &prm)
     {
-      const std::string name = prm.get("Model");
-      for (const auto &entry : entries())
-        if (entry.name == name)
-          {
-            prm.enter_subsection(name);
-            auto material = entry.create(prm);
-            prm.leave_subsection();
-            return material;
-          }
-      AssertThrow(false,
-                  ExcMessage("Parameter 'Model' = '" + name +
-                             "' is not a known material; known: " + names()));
-      return nullptr;
+      const auto &entry = MaterialList::find(prm.get("Model"));
+      prm.enter_subsection(entry.name);
+      auto material = entry.create(prm);
+      prm.leave_subsection();
+      return material;
     }
   } // namespace MaterialRegistry
 } // namespace impm

@@ -35,6 +35,12 @@ namespace impm
   basis_type_from_string(const std::string &name);
 
   /**
+   * @brief The scene's name of a basis ("standard MPM" or "GIMP").
+   */
+  std::string
+  basis_name(const BasisType basis);
+
+  /**
    * @brief One-dimensional weights between one node and one material point.
    *
    * All functions take the distance `d = x_p - x_v` of the point from the node

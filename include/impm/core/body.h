@@ -6,6 +6,7 @@
 
 #include <impm/mechanics/material.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -59,8 +60,25 @@ namespace impm
 
     /** Name used in messages ("Body 1", ...). */
     std::string name;
-    /** "box", "disc", "sphere" or "polygon". */
-    std::string shape;
+    /** @brief The shapes a body can have. */
+    enum class Shape
+    {
+      /** A box between two corners (2D and 3D). */
+      box,
+      /** A disc (2D). */
+      disc,
+      /** A sphere (3D). */
+      sphere,
+      /** A polygon (2D). */
+      polygon
+    };
+
+    /** The scene's names of the shapes, in enum order. */
+    static constexpr std::array<const char *, 4> shape_names = {
+      {"box", "disc", "sphere", "polygon"}};
+
+    /** The body's shape. */
+    Shape shape = Shape::box;
     /** Box corners. */
     Point<dim> lower_corner, upper_corner;
     /** Disc or sphere centre. */

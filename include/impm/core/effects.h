@@ -7,6 +7,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
+#include <impm/base/plugin_list.h>
 #include <impm/basis/basis_functions.h>
 #include <impm/core/body.h>
 
@@ -85,37 +86,18 @@ namespace impm
   };
 
   /**
-   * @brief The registry of force effects by name (ASPECT's plugin pattern):
-   * each effect registers its subsection name, a function that declares its
-   * parameters and one that creates it.
+   * @brief The force effects, registered by name. An entry's
+   * declare_parameters() declares `Enabled` (with the effect's default) and
+   * the effect's own entries, in the subsection of its name.
+   */
+  template <int dim>
+  using ForceEffectList = PluginList<ForceEffect<dim>, ParameterHandler &>;
+
+  /**
+   * @brief The scene's side of the force effects: one subsection each.
    */
   namespace EffectRegistry
   {
-    /** @brief One registered effect. */
-    template <int dim>
-    struct Entry
-    {
-      /** Name of the effect and of its subsection. */
-      std::string name;
-      /** Default of its `Enabled` entry. */
-      bool enabled_by_default;
-      /** Declares its parameters (inside its subsection). */
-      std::function<void(ParameterHandler &)> declare_parameters;
-      /** Creates it from its parsed parameters (same subsection). */
-      std::function<std::unique_ptr<ForceEffect<dim>>(ParameterHandler &)>
-        create;
-    };
-
-    /** @brief Register an effect; returns true (for a static initialiser). */
-    template <int dim>
-    bool
-    register_effect(const Entry<dim> &entry);
-
-    /** @brief All registered effects. */
-    template <int dim>
-    const std::vector<Entry<dim>> &
-    entries();
-
     /**
      * @brief Declare one subsection per registered effect, each with
      * `Enabled` and the effect's own entries.
@@ -124,7 +106,14 @@ namespace impm
     declare_parameters(ParameterHandler &prm);
 
     /**
-     * @brief Create the effects the scene enables, in registration order.
+     * @brief Declare the `Enabled` entry of an effect, on by default or not.
+     */
+    void
+    declare_enabled(ParameterHandler &prm, const bool enabled_by_default);
+
+    /**
+     * @brief Create the effects the scene enables, in the order of their
+     * names.
      */
     template <int dim>
     std::vector<std::unique_ptr<ForceEffect<dim>>>
@@ -136,27 +125,27 @@ namespace impm
  * Register force effect CLASS (a class template over dim) under NAME, enabled
  * by default or not: the one line an effect needs besides its class.
  */
-#define IMPM_REGISTER_FORCE_EFFECT(CLASS, NAME, ENABLED) \
-  namespace                                              \
-  {                                                      \
-    const bool CLASS##_registered_2 =                    \
-      impm::EffectRegistry::register_effect<2>(          \
-        {NAME,                                           \
-         ENABLED,                                        \
-         &CLASS<2>::declare_parameters,                  \
-         [](dealii::ParameterHandler &prm)               \
-           -> std::unique_ptr<impm::ForceEffect<2>> {    \
-           return std::make_unique<CLASS<2>>(prm);       \
-         }});                                            \
-    const bool CLASS##_registered_3 =                    \
-      impm::EffectRegistry::register_effect<3>(          \
-        {NAME,                                           \
-         ENABLED,                                        \
-         &CLASS<3>::declare_parameters,                  \
-         [](dealii::ParameterHandler &prm)               \
-           -> std::unique_ptr<impm::ForceEffect<3>> {    \
-           return std::make_unique<CLASS<3>>(prm);       \
-         }});                                            \
+#define IMPM_REGISTER_FORCE_EFFECT(CLASS, NAME, ENABLED)               \
+  namespace                                                            \
+  {                                                                    \
+    template <int dim>                                                 \
+    bool                                                               \
+    register_##CLASS()                                                 \
+    {                                                                  \
+      return impm::ForceEffectList<dim>::register_plugin(              \
+        {NAME,                                                         \
+         NAME,                                                         \
+         [](dealii::ParameterHandler &prm) {                           \
+           impm::EffectRegistry::declare_enabled(prm, ENABLED);        \
+           CLASS<dim>::declare_parameters(prm);                        \
+         },                                                            \
+         [](dealii::ParameterHandler &prm)                             \
+           -> std::unique_ptr<impm::ForceEffect<dim>> {                \
+           return std::make_unique<CLASS<dim>>(prm);                   \
+         }});                                                          \
+    }                                                                  \
+    const bool CLASS##_registered = register_##CLASS<2>() &&           \
+                                    register_##CLASS<3>();             \
   }
 
 #endif

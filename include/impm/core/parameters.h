@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <impm/basis/basis_functions.h>
 #include <impm/core/body.h>
 
 #include <array>
@@ -31,6 +32,147 @@ namespace impm
                const std::string      &section,
                const std::string      &entry,
                const unsigned int      n);
+
+    /**
+     * @brief As get_vector(), but an empty entry is allowed too (it returns
+     * an empty list): for optional corners and extents.
+     */
+    std::vector<double>
+    get_optional_vector(const ParameterHandler &prm,
+                        const std::string      &section,
+                        const std::string      &entry,
+                        const unsigned int      n);
+
+    /**
+     * @brief Parse entry @p entry of the current subsection as a list of
+     * points `x, y; x, y; ...`, each with @p n coordinates; a wrong count is
+     * an error naming the entry (as `section/entry`) and its value.
+     */
+    std::vector<std::vector<double>>
+    get_point_list(const ParameterHandler &prm,
+                   const std::string      &section,
+                   const std::string      &entry,
+                   const unsigned int      n);
+
+    /**
+     * @brief Error for an entry whose value is out of its allowed range:
+     * throws std::invalid_argument with one line naming the entry, the value
+     * and what is allowed.
+     */
+    [[noreturn]] void
+    bad_value(const std::string &entry,
+              const std::string &value,
+              const std::string &allowed);
+
+    /** @brief The displacement condition on a grid face. */
+    enum class FaceCondition
+    {
+      /** Free. */
+      none,
+      /** Normal component zero. */
+      roller,
+      /** All components zero. */
+      fixed,
+      /** All components follow the face's displacement (ramped). */
+      prescribed,
+      /** The normal component follows it, the others are free. */
+      prescribed_normal
+    };
+
+    /** @brief The scene's names of the face conditions, in enum order. */
+    constexpr std::array<const char *, 5> face_condition_names = {
+      {"none", "roller", "fixed", "prescribed", "prescribed normal"}};
+
+    /**
+     * @brief Whether @p condition on face @p face holds component
+     * @p component of the displacement.
+     */
+    inline bool
+    constrains(const FaceCondition condition,
+               const unsigned int  face,
+               const unsigned int  component)
+    {
+      switch (condition)
+        {
+          case FaceCondition::fixed:
+          case FaceCondition::prescribed:
+            return true;
+          case FaceCondition::roller:
+          case FaceCondition::prescribed_normal:
+            return component == face / 2;
+          default:
+            return false;
+        }
+    }
+
+    /** @brief Whether @p condition moves the face. */
+    inline bool
+    is_prescribed(const FaceCondition condition)
+    {
+      return condition == FaceCondition::prescribed ||
+             condition == FaceCondition::prescribed_normal;
+    }
+
+    /** @brief The statement of equilibrium. */
+    enum class Formulation
+    {
+      /** The paper's eq. 9-10: the pulled-back stress on the start-of-step
+       * grid. */
+      previously_converged,
+      /** Eq. 7-8: Cauchy stress with mapped gradients. */
+      updated_lagrangian
+    };
+
+    /** @brief The scene's names of the formulations, in enum order. */
+    constexpr std::array<const char *, 2> formulation_names = {
+      {"previously converged", "updated Lagrangian"}};
+
+    /** @brief The linear solver of each Newton iteration. */
+    enum class LinearSolverType
+    {
+      /** Trilinos Amesos KLU. */
+      direct,
+      /** GMRES preconditioned with Trilinos ML. */
+      gmres_amg
+    };
+
+    /** @brief The scene's names of the linear solvers, in enum order. */
+    constexpr std::array<const char *, 2> linear_solver_names = {
+      {"direct", "GMRES with AMG"}};
+
+    /** @brief An analytical solution to compare with. */
+    enum class AnalyticalSolution
+    {
+      /** None. */
+      none,
+      /** The column under its own weight (the paper's eq. 12). */
+      column
+    };
+
+    /** @brief The scene's names of the analytical solutions. */
+    constexpr std::array<const char *, 2> analytical_solution_names = {
+      {"none", "column"}};
+
+    /**
+     * @brief The index in @p names of @p value: for parsing a selection
+     * once into its enum. A value not in the list (which the entry's
+     * Patterns::Selection has already excluded) is an error naming the
+     * entry.
+     */
+    template <std::size_t n>
+    unsigned int
+    selection_index(const std::array<const char *, n> &names,
+                    const std::string                 &entry,
+                    const std::string                 &value)
+    {
+      for (unsigned int i = 0; i < n; ++i)
+        if (value == names[i])
+          return i;
+      std::string allowed;
+      for (const char *name : names)
+        allowed += (allowed.empty() ? "" : "|") + std::string(name);
+      bad_value(entry, value, "allowed: " + allowed + ".");
+    }
 
     /** @brief Scene name, dimension and where output goes. */
     struct Scene
@@ -60,13 +202,8 @@ namespace impm
       Point<dim> upper_corner;
       /** Cells in each direction. */
       std::array<unsigned int, dim> n_cells;
-      /**
-       * Condition on each face, in the order x-, x+, y-, y+ (, z-, z+):
-       * "none", "roller" (normal displacement zero), "fixed", "prescribed"
-       * (all components follow face_displacements) or "prescribed normal"
-       * (the normal component follows it, the others are free).
-       */
-      std::array<std::string, 2 * dim> face_conditions;
+      /** Condition on each face, in the order x-, x+, y-, y+ (, z-, z+). */
+      std::array<FaceCondition, 2 * dim> face_conditions;
       /** Displacement of prescribed faces at the full load (ramped). */
       std::array<Tensor<1, dim>, 2 * dim> face_displacements;
       /** Whether a face's condition is limited to a box of it. */
@@ -85,8 +222,8 @@ namespace impm
     /** @brief How points and nodes are weighted. */
     struct MaterialPoints
     {
-      /** "GIMP" or "standard MPM". */
-      std::string basis;
+      /** GIMP or standard MPM. */
+      BasisType basis;
       /** Whether GIMP domains stretch with the deformation. */
       bool update_domains;
 
@@ -101,17 +238,17 @@ namespace impm
     /** @brief Load stepping, Newton and the linear solver. */
     struct Solver
     {
-      /** "previously converged" (eq. 9-10) or "updated Lagrangian" (eq. 7-8,
+      /** Previously converged (eq. 9-10) or updated Lagrangian (eq. 7-8,
        * with mapped derivatives): the same iterates, different cost. */
-      std::string formulation;
+      Formulation formulation;
       /** Number of equal load steps. */
       unsigned int n_load_steps;
       /** Convergence when |r| / |f_ext| falls below this. */
       double tolerance;
       /** Newton iterations allowed per load step. */
       unsigned int max_iterations;
-      /** "direct" (Amesos KLU) or "GMRES with AMG" (Trilinos ML). */
-      std::string linear_solver;
+      /** Direct (Amesos KLU) or GMRES with AMG (Trilinos ML). */
+      LinearSolverType linear_solver;
       /** Relative tolerance of the iterative linear solver. */
       double linear_tolerance;
       /** Cut failed load steps and grow easy ones (else a failure stops). */
@@ -163,10 +300,28 @@ namespace impm
     {
       /** Write point files every this many load steps (0: never). */
       unsigned int interval;
-      /** Compare with this analytical solution ("none", "column"). */
-      std::string analytical_solution;
-      /** Fields written to the point files ("all" or a list). */
-      std::vector<std::string> fields;
+      /** Compare with this analytical solution. */
+      AnalyticalSolution analytical_solution;
+      /** @brief The fields written to the point files. */
+      struct Fields
+      {
+        /** Displacement x - X. */
+        bool displacement = true;
+        /** Initial position X. */
+        bool initial_position = true;
+        /** The six Cauchy stress components. */
+        bool stress = true;
+        /** The von Mises equivalent stress. */
+        bool von_mises_stress = true;
+        /** The accumulated plastic multiplier (plastic scenes only). */
+        bool plastic_multiplier = true;
+        /** The current volume. */
+        bool volume = true;
+        /** The process that owns the point. */
+        bool rank = true;
+        /** The body (scenes with several bodies only). */
+        bool body = true;
+      } fields;
 
       /** @brief Declare the entries in subsection "Output". */
       static void
@@ -196,9 +351,9 @@ namespace impm
       /** @brief Declare the entries in subsection "Testing". */
       static void
       declare_parameters(ParameterHandler &prm);
-      /** @brief Read them. */
+      /** @brief Read them; positions have @p dimension coordinates. */
       void
-      parse_parameters(ParameterHandler &prm);
+      parse_parameters(ParameterHandler &prm, const unsigned int dimension);
     };
 
     /** @brief Everything a scene says. */

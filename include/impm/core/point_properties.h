@@ -1,6 +1,11 @@
 #ifndef impm_core_point_properties_h
 #define impm_core_point_properties_h
 
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
 #include <limits>
 
 namespace impm
@@ -74,6 +79,183 @@ namespace impm
       plastic_multiplier = plastic ? n_properties++ : absent;
       body               = several_bodies ? n_properties++ : absent;
     }
+  };
+
+  /**
+   * @brief Typed read access to one material point's properties: the one
+   * place that knows how tensors are stored in the property array.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class PointState
+  {
+  public:
+    /** The property indices. */
+    using P = PointProperties<dim>;
+
+    /** @brief View the properties @p properties of one point. */
+    explicit PointState(const dealii::ArrayView<const double> &properties)
+      : properties(properties)
+    {}
+
+    /** @brief The initial position X. */
+    dealii::Point<dim>
+    initial_position() const
+    {
+      dealii::Point<dim> X;
+      for (unsigned int d = 0; d < dim; ++d)
+        X[d] = properties[P::initial_position + d];
+      return X;
+    }
+
+    /** @brief The deformation gradient F (3x3, also in plane strain). */
+    dealii::Tensor<2, 3>
+    deformation_gradient() const
+    {
+      dealii::Tensor<2, 3> F;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          F[i][j] = properties[P::deformation_gradient + 3 * i + j];
+      return F;
+    }
+
+    /** @brief J = det F. */
+    double
+    jacobian() const
+    {
+      return dealii::determinant(deformation_gradient());
+    }
+
+    /** @brief The elastic left Cauchy-Green tensor b^e. */
+    dealii::SymmetricTensor<2, 3>
+    elastic_left_cauchy_green() const
+    {
+      return symmetric(P::elastic_left_cauchy_green);
+    }
+
+    /** @brief The Kirchhoff stress tau. */
+    dealii::SymmetricTensor<2, 3>
+    kirchhoff_stress() const
+    {
+      return symmetric(P::kirchhoff_stress);
+    }
+
+    /** @brief The Cauchy stress sigma = tau / J. */
+    dealii::SymmetricTensor<2, 3>
+    cauchy_stress() const
+    {
+      return kirchhoff_stress() / jacobian();
+    }
+
+    /** @brief The initial volume V^0. */
+    double
+    initial_volume() const
+    {
+      return properties[P::initial_volume];
+    }
+
+    /** @brief The current volume J V^0. */
+    double
+    volume() const
+    {
+      return jacobian() * initial_volume();
+    }
+
+    /** @brief The mass. */
+    double
+    mass() const
+    {
+      return properties[P::mass];
+    }
+
+    /** @brief The current GIMP domain half-lengths. */
+    dealii::Tensor<1, dim>
+    domain_half_length() const
+    {
+      dealii::Tensor<1, dim> half_length;
+      for (unsigned int d = 0; d < dim; ++d)
+        half_length[d] = properties[P::domain_half_length + d];
+      return half_length;
+    }
+
+  private:
+    /** A symmetric tensor stored as its six unrolled entries. */
+    dealii::SymmetricTensor<2, 3>
+    symmetric(const unsigned int first) const
+    {
+      dealii::SymmetricTensor<2, 3> t;
+      for (unsigned int k = 0; k < 6; ++k)
+        t.access_raw_entry(k) = properties[first + k];
+      return t;
+    }
+
+    /** The point's properties. */
+    const dealii::ArrayView<const double> properties;
+  };
+
+  /**
+   * @brief Typed write access to one material point's properties.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class MutablePointState : public PointState<dim>
+  {
+  public:
+    /** The property indices. */
+    using P = PointProperties<dim>;
+
+    /** @brief View the properties @p properties of one point. */
+    explicit MutablePointState(const dealii::ArrayView<double> &properties)
+      : PointState<dim>(
+          dealii::ArrayView<const double>(properties.data(), properties.size()))
+      , properties(properties)
+    {}
+
+    /** @brief Set the deformation gradient F. */
+    void
+    set_deformation_gradient(const dealii::Tensor<2, 3> &F) const
+    {
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          properties[P::deformation_gradient + 3 * i + j] = F[i][j];
+    }
+
+    /** @brief Set the elastic left Cauchy-Green tensor b^e. */
+    void
+    set_elastic_left_cauchy_green(
+      const dealii::SymmetricTensor<2, 3> &elastic_strain) const
+    {
+      set_symmetric(elastic_strain, P::elastic_left_cauchy_green);
+    }
+
+    /** @brief Set the Kirchhoff stress tau. */
+    void
+    set_kirchhoff_stress(const dealii::SymmetricTensor<2, 3> &tau) const
+    {
+      set_symmetric(tau, P::kirchhoff_stress);
+    }
+
+    /** @brief Set the current GIMP domain half-length in direction @p d. */
+    void
+    set_domain_half_length(const unsigned int d, const double value) const
+    {
+      properties[P::domain_half_length + d] = value;
+    }
+
+  private:
+    /** Store a symmetric tensor as its six unrolled entries. */
+    void
+    set_symmetric(const dealii::SymmetricTensor<2, 3> &t,
+                  const unsigned int                   first) const
+    {
+      for (unsigned int k = 0; k < 6; ++k)
+        properties[first + k] = t.access_raw_entry(k);
+    }
+
+    /** The point's properties. */
+    const dealii::ArrayView<double> properties;
   };
 } // namespace impm
 

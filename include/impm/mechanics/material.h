@@ -5,6 +5,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <impm/base/plugin_list.h>
+
 #include <functional>
 #include <memory>
 #include <string>
@@ -189,8 +191,21 @@ namespace impm
                        Tensor<4, 3>             &T) const;
 
   public:
-    // The constants stay public: the unit tests check them.
+    /** @brief Lame's first parameter lambda. */
+    double
+    lame_first_parameter() const
+    {
+      return lambda;
+    }
 
+    /** @brief The shear modulus mu. */
+    double
+    shear_modulus() const
+    {
+      return mu;
+    }
+
+  private:
     /** Lame's first parameter. */
     double lambda;
     /** Shear modulus. */
@@ -204,41 +219,20 @@ namespace impm
   };
 
   /**
-   * @brief The registry of material models, by name.
+   * @brief The material models, registered by name.
    *
    * Each model registers a name, a function that declares its parameters in
    * the subsection of that name and a function that creates it from them.
    * The names form the `Patterns::Selection` of the scene's `Model` entry,
    * so a misspelt name is an error that lists the known ones.
    */
+  using MaterialList = PluginList<Material, ParameterHandler &>;
+
+  /**
+   * @brief The `Model` entry of a body's "Material" subsection.
+   */
   namespace MaterialRegistry
   {
-    /** @brief One registered model. */
-    struct Entry
-    {
-      /** Name used in scenes. */
-      std::string name;
-      /** Declares the model's parameters (inside its own subsection). */
-      std::function<void(ParameterHandler &)> declare_parameters;
-      /** Creates the model from the parsed parameters (same subsection). */
-      std::function<std::unique_ptr<Material>(ParameterHandler &)> create;
-    };
-
-    /**
-     * @brief Register a model; returns a dummy value so that it can
-     * initialise a static variable.
-     */
-    bool
-    register_material(const Entry &entry);
-
-    /** @brief All registered models. */
-    const std::vector<Entry> &
-    entries();
-
-    /** @brief Names joined by '|', for Patterns::Selection. */
-    std::string
-    names();
-
     /**
      * @brief Declare, in the current subsection, the `Model` entry and one
      * subsection per registered model.

@@ -1,0 +1,103 @@
+#ifndef impm_assembly_ghost_stabilisation_h
+#define impm_assembly_ghost_stabilisation_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <impm/core/parameters.h>
+#include <impm/grid/background_grid.h>
+#include <impm/points/material_points.h>
+
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  template <int dim>
+  class LoadStepSystem;
+
+  /**
+   * @brief Ghost stabilisation: a penalty on the jump of the normal
+   * gradient of the displacement increment across the interior faces of
+   * cells that material barely fills (Burman's ghost penalty, as used for
+   * implicit MPM by Coombs), so that a node fed only by the edge of a
+   * point's domain cannot make the system singular.
+   *
+   * The faces and their penalty matrices are chosen once per load step;
+   * the penalty acts on the displacement increment, so a converged step is
+   * in equilibrium with it. A scene that switches it off creates none of
+   * this.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class GhostStabilisation
+  {
+  public:
+    /** @brief A face penalty, fixed during a load step. */
+    struct FacePenalty
+    {
+      /** Local indices (nodal vectors) of both cells' DoFs. */
+      std::vector<unsigned int> dofs;
+      /** The penalty matrix on those DoFs. */
+      FullMatrix<double> matrix;
+    };
+
+    /**
+     * @brief Constructor.
+     * @param parameters The scene's "Ghost stabilisation" subsection.
+     * @param grid The background grid.
+     * @param bodies The bodies: their stiffest material scales the penalty.
+     */
+    GhostStabilisation(const Parameters::Stabilisation &parameters,
+                       const BackgroundGrid<dim>       &grid,
+                       const std::vector<Body<dim>>    &bodies);
+
+    /**
+     * @brief Choose this step's faces: between two locally owned or ghost
+     * cells whose DoFs are all touched by material, where either cell is
+     * filled to less than the threshold. Collective.
+     * @param material_points The points at the start of the step.
+     * @param touched For each local DoF, whether a point's support has it.
+     */
+    void
+    setup(const MaterialPoints<dim> &material_points,
+          const std::vector<bool>   &touched);
+
+    /** @brief This step's face penalties. */
+    const std::vector<FacePenalty> &
+    faces() const
+    {
+      return face_penalties;
+    }
+
+    /**
+     * @brief Add the penalty forces of @p increment to @p internal_force
+     * (before its compress()).
+     */
+    void
+    add_forces(const NodalVector &increment, NodalVector &internal_force) const;
+
+    /**
+     * @brief Add the penalty matrices to the system matrix (before its
+     * compress()).
+     */
+    void
+    add_matrix(const LoadStepSystem<dim>      &system,
+               TrilinosWrappers::SparseMatrix &matrix) const;
+
+    /** @brief A one-line description for the start-up report. */
+    std::string
+    description() const;
+
+  private:
+    const Parameters::Stabilisation &parameters;
+    const BackgroundGrid<dim>       &grid;
+    /** The largest Young's modulus of the bodies. */
+    double                   modulus = 0.;
+    std::vector<FacePenalty> face_penalties;
+  };
+} // namespace impm
+
+#endif

@@ -1,0 +1,226 @@
+#ifndef impm_grid_background_grid_h
+#define impm_grid_background_grid_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <impm/basis/basis_functions.h>
+#include <impm/core/parameters.h>
+
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /** The distributed vectors of nodal values (full grid numbering). */
+  using NodalVector = LinearAlgebra::distributed::Vector<double>;
+
+  /**
+   * @brief The background grid: the Cartesian
+   * `parallel::distributed::Triangulation`, its Q1 degrees of freedom, the
+   * grid-face conditions with their constraints, the prescribed DoFs, and the
+   * DoFs whose reactions are summed per face and component.
+   *
+   * The grid never moves: each load step is solved on it and the material
+   * points carry the deformation.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class BackgroundGrid
+  {
+  public:
+    /**
+     * @brief Make the triangulation and distribute the DoFs.
+     * @param parameters The scene's "Grid" subsection.
+     * @param communicator The processes that share the grid.
+     */
+    BackgroundGrid(const Parameters::Grid<dim> &parameters,
+                   const MPI_Comm               communicator);
+
+    /** @brief The triangulation. */
+    const parallel::distributed::Triangulation<dim> &
+    get_triangulation() const
+    {
+      return triangulation;
+    }
+
+    /** @brief The DoF handler of the displacement (Q1^dim). */
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    /** @brief The finite element, Q1^dim. */
+    const FESystem<dim> &
+    get_fe() const
+    {
+      return fe;
+    }
+
+    /** @brief The mapping of the cells. */
+    const MappingQ1<dim> &
+    get_mapping() const
+    {
+      return mapping;
+    }
+
+    /** @brief The grid's structure: corners, cell sizes, node numbering. */
+    const CartesianGrid<dim> &
+    cartesian() const
+    {
+      return grid;
+    }
+
+    /** @brief The constraints of the grid-face conditions. */
+    const AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+
+    /** @brief The DoFs this process owns. */
+    const IndexSet &
+    locally_owned_dofs() const
+    {
+      return owned_dofs;
+    }
+
+    /** @brief Number of DoFs this process owns (the first local indices). */
+    unsigned int
+    n_locally_owned_dofs() const
+    {
+      return owned_dofs.n_elements();
+    }
+
+    /** @brief Number of local DoFs: owned, then ghosts. */
+    unsigned int
+    n_local_dofs() const;
+
+    /**
+     * @brief The local index (owned, then ghosts) of a locally relevant DoF.
+     */
+    unsigned int
+    local_index(const types::global_dof_index dof) const
+    {
+      return partitioner->global_to_local(dof);
+    }
+
+    /**
+     * @brief Size @p vector for the owned and ghost DoFs (zeroed).
+     */
+    void
+    reinit_vector(NodalVector &vector) const;
+
+    /**
+     * @brief The local indices of the DoFs of grid node @p node (its index
+     * in the Cartesian numbering), or nullptr if the node is outside this
+     * process's ghost layer.
+     */
+    const std::array<unsigned int, dim> *
+    node_dofs(const std::uint64_t node) const
+    {
+      const auto found = dofs_of_node.find(node);
+      return found == dofs_of_node.end() ? nullptr : &found->second;
+    }
+
+    /**
+     * @brief Set the prescribed DoFs of @p increment (ghosts included) to
+     * their share of a load increment @p load_increment.
+     */
+    void
+    apply_prescribed_increment(const double load_increment,
+                               NodalVector &increment) const;
+
+    /**
+     * @brief The (face * dim + component) pairs that carry reactions, in
+     * the order of the face numbering.
+     */
+    const std::vector<unsigned int> &
+    reaction_columns() const
+    {
+      return columns_with_reactions;
+    }
+
+    /** @brief Reactions, summed per face and component. */
+    struct Reactions
+    {
+      /** By face * dim + component (2 dim * dim entries). */
+      std::vector<double> by_column;
+      /**
+       * |sum of reactions + external force| / |external force|, or a
+       * negative number when there is no load or no reaction to balance it.
+       */
+      double imbalance = -1.;
+    };
+
+    /**
+     * @brief The reactions R = f_int - f_ext on the constrained DoFs (the
+     * supports' force on the material) and their balance with the load.
+     * Collective.
+     */
+    Reactions
+    compute_reactions(const NodalVector &internal_force,
+                      const NodalVector &external_force) const;
+
+    /**
+     * @brief A one-line description of each face condition the scene sets.
+     */
+    std::vector<std::string>
+    face_descriptions() const;
+
+  private:
+    /** Make the triangulation from a coarse mesh refined globally. */
+    void
+    make_triangulation();
+
+    /** Constraints, prescribed and reaction DoFs of the face conditions. */
+    void
+    apply_face_conditions();
+
+    /** The map from grid nodes to their DoFs. */
+    void
+    map_nodes_to_dofs();
+
+    const Parameters::Grid<dim>              &parameters;
+    const MPI_Comm                            communicator;
+    parallel::distributed::Triangulation<dim> triangulation;
+    const MappingQ1<dim>                      mapping;
+    const FESystem<dim>                       fe;
+    DoFHandler<dim>                           dof_handler;
+    CartesianGrid<dim>                        grid;
+    IndexSet                                  owned_dofs;
+    IndexSet                                  relevant_dofs;
+    /** Owned and ghost DoFs, for local indices. */
+    std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+    AffineConstraints<double>                          constraints;
+
+    /** Local indices (owned and ghost) of each grid node's DoFs. */
+    std::unordered_map<std::uint64_t, std::array<unsigned int, dim>>
+      dofs_of_node;
+    /** Prescribed DoFs (local index) and their displacement at full load. */
+    std::vector<std::pair<unsigned int, double>> prescribed_dofs;
+    /** Owned constrained DoFs (local index) and their face * dim + comp. */
+    std::vector<std::pair<unsigned int, unsigned int>> reaction_dofs;
+    /** The (face * dim + component) pairs that carry reactions. */
+    std::vector<unsigned int> columns_with_reactions;
+  };
+} // namespace impm
+
+#endif

@@ -1,0 +1,29 @@
+#ifndef impm_io_atomic_file_h
+#define impm_io_atomic_file_h
+
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace impm
+{
+  /**
+   * @brief Write a file so that it is never seen half-written: the content
+   * goes to `path.tmp`, which is renamed to @p path only when complete. A
+   * failed open, write or rename is an error naming the file.
+   *
+   * @param path The final name.
+   * @param write Writes the content to the stream it is given.
+   */
+  void
+  write_file_atomically(const std::string                         &path,
+                        const std::function<void(std::ostream &)> &write);
+
+  /**
+   * @brief As above, for content already held in a string.
+   */
+  void
+  write_file_atomically(const std::string &path, const std::string &text);
+} // namespace impm
+
+#endif

@@ -1,0 +1,164 @@
+#ifndef impm_points_material_points_h
+#define impm_points_material_points_h
+
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/particles/particle_handler.h>
+
+#include <impm/core/body.h>
+#include <impm/core/effects.h>
+#include <impm/core/point_properties.h>
+#include <impm/grid/background_grid.h>
+#include <impm/system/point_step.h>
+
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief Global measures of the material points' state, the same on every
+   * process.
+   */
+  template <int dim>
+  struct PointMeasures
+  {
+    /** Sum of the points' masses. */
+    double total_mass = 0.;
+    /** Largest vertical (last axis) Cauchy stress, tension positive. */
+    double max_tensile_vertical_stress = 0.;
+    /** Bounding box of the initial positions. */
+    Point<dim> initial_min, initial_max;
+    /** Bounding box of the current positions. */
+    Point<dim> current_min, current_max;
+  };
+
+  /**
+   * @brief The material points: seeded in the bodies, stored in deal.II's
+   * particle handler with the properties of PointProperties and PointLayout,
+   * moved with the grid's displacement at the end of each load step and
+   * re-sorted into cells and processes.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class MaterialPoints
+  {
+  public:
+    /**
+     * @brief Fill the bodies with points on the grid's cells.
+     * @param bodies The scene's bodies (shapes, points per cell, density,
+     *   material).
+     * @param grid The background grid.
+     * @param communicator The processes that share the points.
+     */
+    MaterialPoints(const std::vector<Body<dim>> &bodies,
+                   const BackgroundGrid<dim>    &grid,
+                   const MPI_Comm                communicator);
+
+    /** @brief The particle handler that holds the points. */
+    const Particles::ParticleHandler<dim> &
+    particles() const
+    {
+      return particle_handler;
+    }
+
+    /** @brief The optional properties of this scene's points. */
+    const PointLayout &
+    layout() const
+    {
+      return property_layout;
+    }
+
+    /** @brief Number of points on all processes. */
+    types::particle_index
+    n_global_points() const
+    {
+      return particle_handler.n_global_particles();
+    }
+
+    /** @brief Number of points on this process. */
+    unsigned int
+    n_local_points() const
+    {
+      return particle_handler.n_locally_owned_particles();
+    }
+
+    /** @brief The total mass when the points were created. */
+    double
+    initial_mass() const
+    {
+      return mass_at_creation;
+    }
+
+    /** @brief The body index (0-based) of a point's properties. */
+    unsigned int
+    body_of(const ArrayView<const double> &properties) const
+    {
+      return property_layout.body == PointLayout::absent ?
+               0 :
+               static_cast<unsigned int>(properties[property_layout.body]);
+    }
+
+    /** @brief The material of a point's properties (of its body). */
+    const Material &
+    material_of(const ArrayView<const double> &properties) const
+    {
+      return *bodies[body_of(properties)].material;
+    }
+
+    /**
+     * @brief What force effects may know of this process's points, in
+     * iteration order.
+     */
+    std::vector<MaterialPointInfo<dim>>
+    infos() const;
+
+    /**
+     * @brief The volume fraction of each locally owned cell that its points
+     * fill in the current configuration, by active cell index (zero for
+     * other cells).
+     */
+    std::vector<double>
+    cell_fill_fractions(const BackgroundGrid<dim> &grid) const;
+
+    /**
+     * @brief End a converged load step: move each point with the grid's
+     * displacement increment, compose its deformation gradient, store the
+     * new stress and state, stretch its GIMP domain (if @p update_domains)
+     * and re-sort the points into cells and processes.
+     *
+     * A point that leaves the grid (or becomes non-finite) stops the run
+     * with an error naming it, the step, its positions and the grid.
+     *
+     * @param point_steps The step's per-point data, in iteration order.
+     * @param increment The converged displacement increment (ghosted).
+     * @param update_domains Whether GIMP domains follow the stretch.
+     * @param load_step The step's number, for messages.
+     */
+    void
+    advance(const std::vector<PointStep<dim>> &point_steps,
+            const NodalVector                 &increment,
+            const bool                         update_domains,
+            const unsigned int                 load_step);
+
+    /** @brief Global measures of the current state. Collective. */
+    PointMeasures<dim>
+    measure() const;
+
+  private:
+    /** Seed the points of every body in the locally owned cells. */
+    void
+    seed(const BackgroundGrid<dim> &grid);
+
+    const std::vector<Body<dim>>   &bodies;
+    const CartesianGrid<dim>       &grid;
+    const MPI_Comm                  communicator;
+    PointLayout                     property_layout;
+    Particles::ParticleHandler<dim> particle_handler;
+    double                          mass_at_creation = 0.;
+  };
+} // namespace impm
+
+#endif

@@ -1,0 +1,142 @@
+#ifndef impm_system_load_step_system_h
+#define impm_system_load_step_system_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <impm/grid/background_grid.h>
+#include <impm/points/material_points.h>
+#include <impm/system/point_step.h>
+
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  template <int dim>
+  class GhostStabilisation;
+
+  /**
+   * @brief Points with the same support DoFs: their stiffness is summed in
+   * one dense local matrix and added to the system matrix once (fixed
+   * during a load step).
+   */
+  struct AssemblyGroup
+  {
+    /** Indices into the point steps of the group's points. */
+    std::vector<unsigned int> points;
+    /** Positions in PointStep::dofs of the DoFs in the linear system, in
+     *  the order of rows. */
+    std::vector<unsigned int> local;
+    /** Their indices in the linear system, ascending. */
+    std::vector<types::global_dof_index> rows;
+    /** For each DoF of the support, whether it is in the linear system. */
+    std::vector<unsigned char> in_system;
+  };
+
+  /**
+   * @brief The linear system of one load step: the basis of every point on
+   * the start-of-step grid (evaluated once per step), the compact numbering
+   * of the DoFs that material touches and that no face condition holds, the
+   * points grouped by support for the assembly, and the sparsity pattern,
+   * matrix and vectors on that numbering.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class LoadStepSystem
+  {
+  public:
+    /**
+     * @brief Constructor.
+     * @param grid The background grid.
+     * @param communicator The processes that share the system.
+     */
+    LoadStepSystem(const BackgroundGrid<dim> &grid,
+                   const MPI_Comm             communicator);
+
+    /**
+     * @brief Evaluate each point's weights and gradients on the grid (once
+     * per load step) and find its support's DoFs.
+     */
+    void
+    evaluate_basis(const MaterialPoints<dim> &material_points,
+                   const BasisType            basis);
+
+    /**
+     * @brief Number the system's DoFs, group the points, let the ghost
+     * stabilisation (if any) choose its faces, and make the sparsity
+     * pattern, matrix and vectors. Collective.
+     */
+    void
+    setup(const MaterialPoints<dim> &material_points,
+          GhostStabilisation<dim>   *ghost_stabilisation);
+
+    /** @brief The per-point data of this step, in iteration order. */
+    std::vector<PointStep<dim>> point_steps;
+    /** @brief The points grouped by support. */
+    std::vector<AssemblyGroup> assembly_groups;
+
+    /**
+     * @brief The index in the linear system of local DoF @p local (owned
+     * or ghost), or numbers::invalid_dof_index.
+     */
+    types::global_dof_index
+    system_index(const unsigned int local) const
+    {
+      return index_in_system[local];
+    }
+
+    /** @brief Number of DoFs in the linear system, on all processes. */
+    types::global_dof_index
+    n_dofs() const
+    {
+      return owned.size();
+    }
+
+    /**
+     * @brief The Euclidean norm of @p vector over the system's DoFs.
+     * Collective.
+     */
+    double
+    norm_in_system(const NodalVector &vector) const;
+
+    /**
+     * @brief Set the right-hand side to @p external - @p internal on the
+     * system's DoFs; returns its norm. Collective.
+     */
+    double
+    set_residual(const NodalVector &external, const NodalVector &internal);
+
+    /**
+     * @brief Add the solution to @p increment on the system's DoFs and
+     * update its ghosts. Collective.
+     */
+    void
+    add_solution_to(NodalVector &increment) const;
+
+    /** @brief The system matrix. */
+    TrilinosWrappers::SparseMatrix matrix;
+    /** @brief The right-hand side (the residual). */
+    TrilinosWrappers::MPI::Vector rhs;
+    /** @brief The solution (the Newton correction). */
+    TrilinosWrappers::MPI::Vector solution;
+
+  private:
+    /** Order the points by support and cut the order into groups. */
+    void
+    make_assembly_groups();
+
+    const BackgroundGrid<dim>           &grid;
+    const MPI_Comm                       communicator;
+    std::vector<types::global_dof_index> index_in_system;
+    IndexSet                             owned;
+    IndexSet                             relevant;
+  };
+} // namespace impm
+
+#endif

@@ -1,0 +1,240 @@
+#include <deal.II/base/mpi.h>
+
+#include <impm/assembly/assembler.h>
+#include <impm/mechanics/equilibrium_forms.h>
+#include <impm/mechanics/pulled_back_stress.h>
+
+#include <type_traits>
+
+namespace impm
+{
+  template <int dim>
+  Assembler<dim>::Assembler(
+    const MaterialPoints<dim>                            &material_points,
+    LoadStepSystem<dim>                                  &system,
+    const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
+    const MPI_Comm                                        communicator)
+    : material_points(material_points)
+    , system(system)
+    , force_effects(force_effects)
+    , communicator(communicator)
+  {}
+
+
+
+  template <int dim>
+  bool
+  Assembler<dim>::update_stresses(const NodalVector &increment)
+  {
+    unsigned int p          = 0;
+    bool         admissible = true;
+    for (const auto &point : material_points.particles())
+      {
+        PointStep<dim> &step = system.point_steps[p++];
+        const auto     &s    = step.support;
+        Tensor<2, dim>  dF   = unit_symmetric_tensor<dim>();
+        for (unsigned int v = 0; v < s.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              const double du = increment.local_element(step.dofs[v * dim + i]);
+              for (unsigned int j = 0; j < dim; ++j)
+                dF[i][j] += du * s.gradients[v][j];
+            }
+        step.deformation_increment = dF;
+        // An inverted or non-finite increment fails the Newton solve (and
+        // lets the step control cut the step).
+        const double jacobian = determinant(dF);
+        if (!(jacobian > 0.) || !std::isfinite(jacobian))
+          {
+            admissible = false;
+            continue;
+          }
+        step.deformation_increment_inverse = invert(dF);
+        step.material->update(
+          PulledBackStress<dim>::embed(dF),
+          PointState<dim>(point.get_properties()).elastic_left_cauchy_green(),
+          step.update);
+      }
+    return Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1;
+  }
+
+
+
+  template <int dim>
+  void
+  Assembler<dim>::assemble_external_force(const double load_factor,
+                                          NodalVector &external_force) const
+  {
+    external_force = 0.;
+    if (!force_effects.empty())
+      {
+        const auto                  infos = material_points.infos();
+        std::vector<Tensor<1, dim>> forces(infos.size());
+        for (const auto &effect : force_effects)
+          effect->add_forces(infos, load_factor, forces);
+        for (unsigned int p = 0; p < infos.size(); ++p)
+          {
+            const PointStep<dim> &step = system.point_steps[p];
+            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+              for (unsigned int i = 0; i < dim; ++i)
+                external_force.local_element(step.dofs[v * dim + i]) +=
+                  step.support.weights[v] * forces[p][i];
+          }
+      }
+    external_force.compress(VectorOperation::add);
+  }
+
+
+
+  namespace
+  {
+    /**
+     * @brief The assembler of one statement of equilibrium, @p Form
+     * (PreviouslyConvergedForm or UpdatedLagrangianForm).
+     */
+    template <int dim, typename Form>
+    class FormAssembler : public Assembler<dim>
+    {
+    public:
+      /** The updated Lagrangian form maps the gradients to the current
+       * configuration. */
+      static constexpr bool maps_gradients =
+        std::is_same_v<Form, UpdatedLagrangianForm<dim>>;
+
+      /** @brief Constructor: see Assembler::create(). */
+      FormAssembler(
+        const MaterialPoints<dim>                            &material_points,
+        LoadStepSystem<dim>                                  &system,
+        const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
+        const MPI_Comm                                        communicator)
+        : Assembler<dim>(material_points, system, force_effects, communicator)
+      {}
+
+      void
+      add_internal_force(NodalVector &internal_force) override
+      {
+        auto &point_steps = this->system.point_steps;
+        // The updated Lagrangian form keeps its mapped gradients for the
+        // matrix of this iterate.
+        if constexpr (maps_gradients)
+          mapped_gradients.resize(point_steps.size());
+        std::array<double, PointSupport<dim>::max_nodes * dim> forces;
+        for (unsigned int p = 0; p < point_steps.size(); ++p)
+          {
+            const PointStep<dim> &step      = point_steps[p];
+            const Tensor<1, dim> *gradients = step.support.gradients.data();
+            if constexpr (maps_gradients)
+              {
+                Form::map_gradients(gradients,
+                                    step.support.n_nodes,
+                                    step.deformation_increment_inverse,
+                                    mapped_gradients[p].data());
+                gradients = mapped_gradients[p].data();
+              }
+            const Tensor<2, dim> stress =
+              Form::force_stress(step.update,
+                                 step.deformation_increment_inverse,
+                                 step.initial_volume);
+            const unsigned int n = step.support.n_nodes * dim;
+            std::fill(forces.begin(), forces.begin() + n, 0.);
+            add_point_forces(stress,
+                             gradients,
+                             step.support.n_nodes,
+                             forces.data());
+            for (unsigned int k = 0; k < n; ++k)
+              internal_force.local_element(step.dofs[k]) += forces[k];
+          }
+      }
+
+      void
+      add_stiffness(TrilinosWrappers::SparseMatrix &matrix) const override
+      {
+        const auto            &point_steps = this->system.point_steps;
+        constexpr unsigned int max_dofs = PointSupport<dim>::max_nodes * dim;
+        std::vector<double>    local_matrix(max_dofs * max_dofs);
+        std::array<double, max_dofs> row_values;
+        for (const AssemblyGroup &group : this->system.assembly_groups)
+          {
+            // The group's matrix over all its support's DoFs; the rows and
+            // columns in the linear system are picked when it is added.
+            const unsigned int n_nodes =
+              point_steps[group.points.front()].support.n_nodes;
+            const unsigned int n_all = n_nodes * dim;
+            std::fill(local_matrix.begin(),
+                      local_matrix.begin() + n_all * n_all,
+                      0.);
+            for (const unsigned int p : group.points)
+              {
+                const PointStep<dim> &step = point_steps[p];
+                const Tensor<1, dim> *gradients =
+                  maps_gradients ? mapped_gradients[p].data() :
+                                   step.support.gradients.data();
+                add_point_stiffness(
+                  Form::tangent(*step.material,
+                                step.update,
+                                step.deformation_increment_inverse,
+                                step.initial_volume),
+                  gradients,
+                  n_nodes,
+                  group.in_system.data(),
+                  local_matrix.data());
+              }
+            const unsigned int n = group.rows.size();
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                const double *row = &local_matrix[group.local[a] * n_all];
+                for (unsigned int b = 0; b < n; ++b)
+                  row_values[b] = row[group.local[b]];
+                matrix.add(group.rows[a],
+                           n,
+                           group.rows.data(),
+                           row_values.data(),
+                           /*elide_zero_values=*/false,
+                           /*col_indices_are_sorted=*/true);
+              }
+          }
+      }
+
+    private:
+      /**
+       * Updated Lagrangian form only: the gradients mapped by the last
+       * internal-force assembly, reused by the matrix of the same iterate.
+       */
+      std::vector<std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>>
+        mapped_gradients;
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  std::unique_ptr<Assembler<dim>>
+  Assembler<dim>::create(
+    const Parameters::Formulation                         formulation,
+    const MaterialPoints<dim>                            &material_points,
+    LoadStepSystem<dim>                                  &system,
+    const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
+    const MPI_Comm                                        communicator)
+  {
+    switch (formulation)
+      {
+        case Parameters::Formulation::updated_lagrangian:
+          return std::make_unique<
+            FormAssembler<dim, UpdatedLagrangianForm<dim>>>(material_points,
+                                                            system,
+                                                            force_effects,
+                                                            communicator);
+        default:
+          return std::make_unique<
+            FormAssembler<dim, PreviouslyConvergedForm<dim>>>(material_points,
+                                                              system,
+                                                              force_effects,
+                                                              communicator);
+      }
+  }
+
+
+
+  template class Assembler<2>;
+  template class Assembler<3>;
+} // namespace impm

@@ -1,0 +1,190 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <impm/assembly/ghost_stabilisation.h>
+#include <impm/system/load_step_system.h>
+
+#include <sstream>
+
+namespace impm
+{
+  template <int dim>
+  GhostStabilisation<dim>::GhostStabilisation(
+    const Parameters::Stabilisation &parameters,
+    const BackgroundGrid<dim>       &grid,
+    const std::vector<Body<dim>>    &bodies)
+    : parameters(parameters)
+    , grid(grid)
+  {
+    for (const auto &body : bodies)
+      modulus = std::max(modulus, body.material->elastic_modulus());
+  }
+
+
+
+  template <int dim>
+  void
+  GhostStabilisation<dim>::setup(const MaterialPoints<dim> &material_points,
+                                 const std::vector<bool>   &touched)
+  {
+    face_penalties.clear();
+    const auto &dof_handler = grid.get_dof_handler();
+    const auto &fe          = grid.get_fe();
+
+    // Volume fraction of each cell filled by its points' current volumes,
+    // shared with the neighbours' ghost copies.
+    std::vector<double> fill = material_points.cell_fill_fractions(grid);
+    GridTools::exchange_cell_data_to_ghosts<double, DoFHandler<dim>>(
+      dof_handler,
+      [&](const typename DoFHandler<dim>::active_cell_iterator &cell) {
+        return fill[cell->active_cell_index()];
+      },
+      [&](const typename DoFHandler<dim>::active_cell_iterator &cell,
+          const double value) { fill[cell->active_cell_index()] = value; });
+
+    // A cell takes part when all its DoFs are in use.
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs_here(n), dofs_there(n);
+    const auto local = [&](const types::global_dof_index dof) {
+      return grid.local_index(dof);
+    };
+    const auto in_use = [&](const std::vector<types::global_dof_index> &dofs) {
+      for (const auto dof : dofs)
+        if (!touched[local(dof)])
+          return false;
+      return true;
+    };
+
+    const QGauss<dim - 1> quadrature(2);
+    const UpdateFlags     flags = update_gradients | update_normal_vectors |
+                              update_JxW_values | update_quadrature_points;
+    FEFaceValues<dim> here(grid.get_mapping(), fe, quadrature, flags);
+    FEFaceValues<dim> there(grid.get_mapping(), fe, quadrature, flags);
+    std::vector<double> normal_derivative(2 * n);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        cell->get_dof_indices(dofs_here);
+        if (!in_use(dofs_here))
+          continue;
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (cell->at_boundary(f))
+              continue;
+            const auto neighbor = cell->neighbor(f);
+            // Each face once: by the lower cell id between owned cells, by
+            // the lower rank across processes.
+            if (neighbor->is_locally_owned() ?
+                  !(cell->id() < neighbor->id()) :
+                  cell->subdomain_id() > neighbor->subdomain_id())
+              continue;
+            if (std::min(fill[cell->active_cell_index()],
+                         fill[neighbor->active_cell_index()]) >=
+                parameters.fill_threshold)
+              continue;
+            neighbor->get_dof_indices(dofs_there);
+            if (!in_use(dofs_there))
+              continue;
+
+            here.reinit(cell, f);
+            there.reinit(neighbor, cell->neighbor_of_neighbor(f));
+            const double scale = parameters.penalty_scale * modulus *
+                                 cell->extent_in_direction(f / 2);
+            FacePenalty face;
+            face.matrix.reinit(2 * n, 2 * n);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              {
+                AssertThrow(here.quadrature_point(q).distance(
+                              there.quadrature_point(q)) <
+                              1e-10 * cell->diameter(),
+                            ExcInternalError());
+                const Tensor<1, dim> normal = here.normal_vector(q);
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    const unsigned int c =
+                      fe.system_to_component_index(i).first;
+                    normal_derivative[i] =
+                      here.shape_grad_component(i, q, c) * normal;
+                    normal_derivative[n + i] =
+                      -there.shape_grad_component(i, q, c) * normal;
+                  }
+                for (unsigned int i = 0; i < 2 * n; ++i)
+                  for (unsigned int j = 0; j < 2 * n; ++j)
+                    if (fe.system_to_component_index(i % n).first ==
+                        fe.system_to_component_index(j % n).first)
+                      face.matrix(i, j) += scale * normal_derivative[i] *
+                                           normal_derivative[j] * here.JxW(q);
+              }
+            face.dofs.resize(2 * n);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                face.dofs[i]     = local(dofs_here[i]);
+                face.dofs[n + i] = local(dofs_there[i]);
+              }
+            face_penalties.push_back(std::move(face));
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  GhostStabilisation<dim>::add_forces(const NodalVector &increment,
+                                      NodalVector       &internal_force) const
+  {
+    Vector<double> face_increment, face_force;
+    for (const FacePenalty &face : face_penalties)
+      {
+        face_increment.reinit(face.dofs.size());
+        face_force.reinit(face.dofs.size());
+        for (unsigned int i = 0; i < face.dofs.size(); ++i)
+          face_increment[i] = increment.local_element(face.dofs[i]);
+        face.matrix.vmult(face_force, face_increment);
+        for (unsigned int i = 0; i < face.dofs.size(); ++i)
+          internal_force.local_element(face.dofs[i]) += face_force[i];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  GhostStabilisation<dim>::add_matrix(
+    const LoadStepSystem<dim>      &system,
+    TrilinosWrappers::SparseMatrix &matrix) const
+  {
+    for (const FacePenalty &face : face_penalties)
+      for (unsigned int i = 0; i < face.dofs.size(); ++i)
+        if (system.system_index(face.dofs[i]) != numbers::invalid_dof_index)
+          for (unsigned int j = 0; j < face.dofs.size(); ++j)
+            if (system.system_index(face.dofs[j]) !=
+                  numbers::invalid_dof_index &&
+                face.matrix(i, j) != 0.)
+              matrix.add(system.system_index(face.dofs[i]),
+                         system.system_index(face.dofs[j]),
+                         face.matrix(i, j));
+  }
+
+
+
+  template <int dim>
+  std::string
+  GhostStabilisation<dim>::description() const
+  {
+    return "ghost stabilisation: penalty scale " +
+           std::to_string(parameters.penalty_scale) + ", fill threshold " +
+           std::to_string(parameters.fill_threshold);
+  }
+
+
+
+  template class GhostStabilisation<2>;
+  template class GhostStabilisation<3>;
+} // namespace impm

@@ -1,0 +1,310 @@
+#include <deal.II/base/mpi.h>
+
+#include <impm/mechanics/pulled_back_stress.h>
+#include <impm/points/material_points.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace impm
+{
+  template <int dim>
+  MaterialPoints<dim>::MaterialPoints(const std::vector<Body<dim>> &bodies,
+                                      const BackgroundGrid<dim>    &grid,
+                                      const MPI_Comm communicator)
+    : bodies(bodies)
+    , grid(grid.cartesian())
+    , communicator(communicator)
+  {
+    bool any_plastic = false;
+    for (const auto &body : bodies)
+      any_plastic = any_plastic || body.material->is_plastic();
+    property_layout.initialize(PointProperties<dim>::n_fixed_properties,
+                               any_plastic,
+                               bodies.size() > 1);
+    particle_handler.initialize(grid.get_triangulation(),
+                                grid.get_mapping(),
+                                property_layout.n_properties);
+    seed(grid);
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::seed(const BackgroundGrid<dim> &background)
+  {
+    using P = PointProperties<dim>;
+    double cell_volume = 1.;
+    for (unsigned int d = 0; d < dim; ++d)
+      cell_volume *= grid.cell_size[d];
+
+    std::vector<double> properties(property_layout.n_properties, 0.);
+    for (unsigned int i = 0; i < 3; ++i)
+      {
+        properties[P::deformation_gradient + 4 * i]  = 1.;
+        properties[P::elastic_left_cauchy_green + i] = 1.;
+      }
+
+    // Ids from the structured cell index, the body and the position in the
+    // cell: the same on any number of processes.
+    constexpr unsigned int max_per_cell = dim == 2 ? 100 : 1000;
+    for (const auto &cell :
+         background.get_triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          std::uint64_t cell_index = 0;
+          Point<dim>    cell_lower;
+          for (int d = dim - 1; d >= 0; --d)
+            {
+              const unsigned int i = static_cast<unsigned int>(std::floor(
+                (cell->center()[d] - grid.lower[d]) / grid.cell_size[d]));
+              cell_index           = cell_index * grid.n_cells[d] + i;
+              cell_lower[d]        = grid.node_coordinate(d, i);
+            }
+          std::vector<Point<dim>> placed;
+          for (unsigned int b = 0; b < bodies.size(); ++b)
+            {
+              const auto        &body       = bodies[b];
+              const unsigned int n          = body.points_per_direction;
+              unsigned int       n_per_cell = 1;
+              for (unsigned int d = 0; d < dim; ++d)
+                n_per_cell *= n;
+              const double volume           = cell_volume / n_per_cell;
+              properties[P::initial_volume] = volume;
+              properties[P::mass]           = body.density * volume;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  properties[P::domain_half_length + d] =
+                    grid.cell_size[d] / (2. * n);
+                  properties[P::initial_domain_half_length + d] =
+                    grid.cell_size[d] / (2. * n);
+                }
+              if (property_layout.body != PointLayout::absent)
+                properties[property_layout.body] = b;
+              for (unsigned int q = 0; q < n_per_cell; ++q)
+                {
+                  Point<dim>   position, reference;
+                  unsigned int rest = q;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      reference[d] = (rest % n + 0.5) / n;
+                      rest /= n;
+                      position[d] =
+                        cell_lower[d] + reference[d] * grid.cell_size[d];
+                    }
+                  // A position inside two bodies belongs to the first.
+                  if (!body.contains(position) ||
+                      std::any_of(placed.begin(),
+                                  placed.end(),
+                                  [&](const Point<dim> &other) {
+                                    return other.distance(position) <
+                                           1e-12 * grid.cell_size[0];
+                                  }))
+                    continue;
+                  placed.push_back(position);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    properties[P::initial_position + d] = position[d];
+                  particle_handler.insert_particle(
+                    position,
+                    reference,
+                    (cell_index * Body<dim>::max_bodies + b) * max_per_cell + q,
+                    cell,
+                    ArrayView<const double>(properties));
+                }
+            }
+        }
+    particle_handler.update_cached_numbers();
+    double mass = 0.;
+    for (const auto &point : particle_handler)
+      mass += PointState<dim>(point.get_properties()).mass();
+    mass_at_creation = Utilities::MPI::sum(mass, communicator);
+    if (particle_handler.n_global_particles() == 0)
+      throw std::invalid_argument(
+        "The bodies contain no material points: no point position of the "
+        "grid's cells lies inside them.");
+  }
+
+
+
+  template <int dim>
+  std::vector<MaterialPointInfo<dim>>
+  MaterialPoints<dim>::infos() const
+  {
+    std::vector<MaterialPointInfo<dim>> list;
+    list.reserve(n_local_points());
+    for (const auto &point : particle_handler)
+      {
+        const auto              properties = point.get_properties();
+        const PointState<dim>   state(properties);
+        MaterialPointInfo<dim> &info = list.emplace_back();
+        info.id                      = point.get_id();
+        info.initial_position        = state.initial_position();
+        info.body                    = body_of(properties);
+        info.mass                    = state.mass();
+      }
+    return list;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  MaterialPoints<dim>::cell_fill_fractions(
+    const BackgroundGrid<dim> &background) const
+  {
+    std::vector<double> fill(
+      background.get_triangulation().n_active_cells(), 0.);
+    for (const auto &cell :
+         background.get_triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          double volume = 0.;
+          for (const auto &point : particle_handler.particles_in_cell(cell))
+            volume += PointState<dim>(point.get_properties()).volume();
+          fill[cell->active_cell_index()] = volume / cell->measure();
+        }
+    return fill;
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::advance(const std::vector<PointStep<dim>> &point_steps,
+                               const NodalVector                 &increment,
+                               const bool                         update_domains,
+                               const unsigned int                 load_step)
+  {
+    std::string  left_grid;
+    unsigned int p = 0;
+    for (auto &point : particle_handler)
+      {
+        const PointStep<dim>        &step = point_steps[p++];
+        const auto                  &s    = step.support;
+        const MutablePointState<dim> state(point.get_properties());
+
+        Point<dim> position = point.get_location();
+        for (unsigned int v = 0; v < s.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            position[i] +=
+              s.weights[v] * increment.local_element(step.dofs[v * dim + i]);
+
+        const Tensor<2, 3> F =
+          PulledBackStress<dim>::embed(step.deformation_increment) *
+          state.deformation_gradient();
+        state.set_deformation_gradient(F);
+        state.set_elastic_left_cauchy_green(
+          step.update.elastic_left_cauchy_green);
+        state.set_kirchhoff_stress(step.update.kirchhoff_stress);
+        if (property_layout.plastic_multiplier != PointLayout::absent)
+          point.get_properties()[property_layout.plastic_multiplier] +=
+            step.update.plastic_multiplier;
+
+        if (update_domains)
+          {
+            // lp = lp0 U_ii with U the right stretch tensor of F = R U.
+            const SymmetricTensor<2, 3> U =
+              symmetrize(transpose(F) * F); // C = U^2
+            const auto eigen = eigenvectors(U);
+            const auto initial_half_length =
+              point.get_properties().data() +
+              PointProperties<dim>::initial_domain_half_length;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                double stretch = 0.;
+                for (unsigned int a = 0; a < 3; ++a)
+                  stretch += std::sqrt(eigen[a].first) * eigen[a].second[d] *
+                             eigen[a].second[d];
+                // At most h/2: a domain then spans at most three nodes.
+                state.set_domain_half_length(
+                  d,
+                  std::min(initial_half_length[d] * stretch,
+                           0.5 * grid.cell_size[d]));
+              }
+          }
+
+        bool finite = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          finite = finite && std::isfinite(position[d]);
+        if ((!finite || !grid.contains(position)) && left_grid.empty())
+          {
+            std::ostringstream message;
+            message << "Load step " << load_step << ": material point "
+                    << point.get_id() << " (initially at "
+                    << state.initial_position() << ") moved to (" << position
+                    << "), outside the background grid [" << grid.lower
+                    << "] - [" << grid.upper << "].";
+            left_grid = message.str();
+          }
+        point.set_location(position);
+      }
+
+    const auto messages = Utilities::MPI::all_gather(communicator, left_grid);
+    for (const auto &message : messages)
+      if (!message.empty())
+        throw std::runtime_error(message);
+
+    const auto n_before = particle_handler.n_global_particles();
+    particle_handler.sort_particles_into_subdomains_and_cells();
+    if (particle_handler.n_global_particles() != n_before)
+      throw std::runtime_error("Material points were lost while sorting them "
+                               "into cells in load step " +
+                               std::to_string(load_step) + ".");
+  }
+
+
+
+  template <int dim>
+  PointMeasures<dim>
+  MaterialPoints<dim>::measure() const
+  {
+    double mass = 0., tension = -std::numeric_limits<double>::max();
+    Point<dim> initial_min, initial_max, current_min, current_max;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        initial_min[d] = current_min[d] = std::numeric_limits<double>::max();
+        initial_max[d] = current_max[d] = -std::numeric_limits<double>::max();
+      }
+    for (const auto &point : particle_handler)
+      {
+        const PointState<dim> state(point.get_properties());
+        mass += state.mass();
+        tension =
+          std::max(tension, state.cauchy_stress()[dim - 1][dim - 1]);
+        const Point<dim> X = state.initial_position();
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double x = point.get_location()[d];
+            initial_min[d] = std::min(initial_min[d], X[d]);
+            initial_max[d] = std::max(initial_max[d], X[d]);
+            current_min[d] = std::min(current_min[d], x);
+            current_max[d] = std::max(current_max[d], x);
+          }
+      }
+    PointMeasures<dim> measures;
+    measures.total_mass = Utilities::MPI::sum(mass, communicator);
+    measures.max_tensile_vertical_stress =
+      Utilities::MPI::max(tension, communicator);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        measures.initial_min[d] =
+          Utilities::MPI::min(initial_min[d], communicator);
+        measures.initial_max[d] =
+          Utilities::MPI::max(initial_max[d], communicator);
+        measures.current_min[d] =
+          Utilities::MPI::min(current_min[d], communicator);
+        measures.current_max[d] =
+          Utilities::MPI::max(current_max[d], communicator);
+      }
+    return measures;
+  }
+
+
+
+  template class MaterialPoints<2>;
+  template class MaterialPoints<3>;
+} // namespace impm

@@ -1,0 +1,270 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <impm/assembly/ghost_stabilisation.h>
+#include <impm/system/load_step_system.h>
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+namespace impm
+{
+  template <int dim>
+  LoadStepSystem<dim>::LoadStepSystem(const BackgroundGrid<dim> &grid,
+                                      const MPI_Comm             communicator)
+    : grid(grid)
+    , communicator(communicator)
+  {}
+
+
+
+  template <int dim>
+  void
+  LoadStepSystem<dim>::evaluate_basis(
+    const MaterialPoints<dim> &material_points,
+    const BasisType            basis)
+  {
+    const BasisEvaluator<dim> evaluator(grid.cartesian(), basis);
+    point_steps.resize(material_points.n_local_points());
+    unsigned int p = 0;
+    for (const auto &point : material_points.particles())
+      {
+        PointStep<dim>       &step       = point_steps[p++];
+        const auto            properties = point.get_properties();
+        const PointState<dim> state(properties);
+        evaluator.evaluate(point.get_location(),
+                           state.domain_half_length(),
+                           step.support);
+        step.initial_volume = state.initial_volume();
+        step.material       = &material_points.material_of(properties);
+        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+          {
+            const auto *dofs = grid.node_dofs(step.support.nodes[v]);
+            if (dofs == nullptr)
+              throw std::runtime_error(
+                "Material point " + std::to_string(point.get_id()) +
+                " couples to a node outside this process's ghost layer.");
+            for (unsigned int c = 0; c < dim; ++c)
+              step.dofs[v * dim + c] = (*dofs)[c];
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepSystem<dim>::setup(const MaterialPoints<dim> &material_points,
+                             GhostStabilisation<dim>   *ghost_stabilisation)
+  {
+    // Mark every DoF a point touches, and tell the owners.
+    NodalVector marker;
+    grid.reinit_vector(marker);
+    for (const PointStep<dim> &step : point_steps)
+      for (unsigned int k = 0; k < step.support.n_nodes * dim; ++k)
+        marker.local_element(step.dofs[k]) = 1.;
+    marker.compress(VectorOperation::add);
+    marker.update_ghost_values();
+    const unsigned int n_local = grid.n_local_dofs();
+    std::vector<bool>  touched(n_local);
+    for (unsigned int i = 0; i < n_local; ++i)
+      touched[i] = marker.local_element(i) > 0.;
+    marker.zero_out_ghost_values();
+
+    // Owned DoFs in the system: touched and not constrained, numbered
+    // contiguously per process.
+    const unsigned int      n_owned = grid.n_locally_owned_dofs();
+    std::vector<bool>       in_system(n_owned);
+    types::global_dof_index n_local_system = 0;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        in_system[i] =
+          touched[i] && !grid.get_constraints().is_constrained(
+                          grid.locally_owned_dofs().nth_index_in_set(i));
+        n_local_system += in_system[i];
+      }
+    types::global_dof_index offset = 0;
+    MPI_Exscan(&n_local_system,
+               &offset,
+               1,
+               Utilities::MPI::mpi_type_id_for_type<types::global_dof_index>,
+               MPI_SUM,
+               communicator);
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      offset = 0;
+    const types::global_dof_index n_system =
+      Utilities::MPI::sum(n_local_system, communicator);
+
+    marker                       = -1.;
+    types::global_dof_index next = offset;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (in_system[i])
+        marker.local_element(i) = static_cast<double>(next++);
+    marker.update_ghost_values();
+    index_in_system.resize(n_local);
+    for (unsigned int i = 0; i < n_local; ++i)
+      index_in_system[i] =
+        marker.local_element(i) >= 0. ?
+          static_cast<types::global_dof_index>(marker.local_element(i)) :
+          numbers::invalid_dof_index;
+
+    owned.clear();
+    owned.set_size(n_system);
+    owned.add_range(offset, offset + n_local_system);
+    relevant = owned;
+    make_assembly_groups();
+    std::vector<types::global_dof_index> rows;
+    for (const AssemblyGroup &group : assembly_groups)
+      rows.insert(rows.end(), group.rows.begin(), group.rows.end());
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    relevant.add_indices(rows.begin(), rows.end());
+    relevant.compress();
+
+    if (ghost_stabilisation != nullptr)
+      ghost_stabilisation->setup(material_points, touched);
+    const auto face_indices = [&](const std::vector<unsigned int> &dofs) {
+      std::vector<types::global_dof_index> indices;
+      for (const unsigned int dof : dofs)
+        if (index_in_system[dof] != numbers::invalid_dof_index)
+          indices.push_back(index_in_system[dof]);
+      std::sort(indices.begin(), indices.end());
+      return indices;
+    };
+    if (ghost_stabilisation != nullptr)
+      for (const auto &face : ghost_stabilisation->faces())
+        for (const auto index : face_indices(face.dofs))
+          relevant.add_index(index);
+    relevant.compress();
+
+    // The sparsity pattern comes from the points' supports and the
+    // stabilised faces.
+    DynamicSparsityPattern dsp(relevant);
+    if (ghost_stabilisation != nullptr)
+      for (const auto &face : ghost_stabilisation->faces())
+        {
+          const auto indices = face_indices(face.dofs);
+          for (const auto row : indices)
+            dsp.add_entries(row, indices.begin(), indices.end(), true);
+        }
+    for (const AssemblyGroup &group : assembly_groups)
+      for (const auto row : group.rows)
+        dsp.add_entries(row, group.rows.begin(), group.rows.end(), true);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               owned,
+                                               communicator,
+                                               relevant);
+    matrix.reinit(owned, owned, dsp, communicator);
+    rhs.reinit(owned, communicator);
+    solution.reinit(owned, communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepSystem<dim>::make_assembly_groups()
+  {
+    // Order the points by their support DoFs (ties by index, so the order
+    // of summation within a group is that of the points), then cut the
+    // order where the support changes.
+    std::vector<unsigned int> order(point_steps.size());
+    std::iota(order.begin(), order.end(), 0u);
+    const auto same_support = [this](const unsigned int a,
+                                     const unsigned int b) {
+      const PointStep<dim> &x = point_steps[a], &y = point_steps[b];
+      return x.support.n_nodes == y.support.n_nodes &&
+             std::equal(x.dofs.begin(),
+                        x.dofs.begin() + x.support.n_nodes * dim,
+                        y.dofs.begin());
+    };
+    std::sort(order.begin(),
+              order.end(),
+              [this](const unsigned int a, const unsigned int b) {
+                const PointStep<dim> &x = point_steps[a], &y = point_steps[b];
+                if (x.support.n_nodes != y.support.n_nodes)
+                  return x.support.n_nodes < y.support.n_nodes;
+                const unsigned int n = x.support.n_nodes * dim;
+                for (unsigned int k = 0; k < n; ++k)
+                  if (x.dofs[k] != y.dofs[k])
+                    return x.dofs[k] < y.dofs[k];
+                return a < b;
+              });
+
+    assembly_groups.clear();
+    std::vector<std::pair<types::global_dof_index, unsigned int>> entries;
+    for (unsigned int first = 0; first < order.size();)
+      {
+        unsigned int last = first + 1;
+        while (last < order.size() && same_support(order[first], order[last]))
+          ++last;
+        AssemblyGroup &group = assembly_groups.emplace_back();
+        group.points.assign(order.begin() + first, order.begin() + last);
+        const PointStep<dim> &step = point_steps[order[first]];
+        entries.clear();
+        for (unsigned int k = 0; k < step.support.n_nodes * dim; ++k)
+          if (index_in_system[step.dofs[k]] != numbers::invalid_dof_index)
+            entries.emplace_back(index_in_system[step.dofs[k]], k);
+        std::sort(entries.begin(), entries.end());
+        group.in_system.assign(step.support.n_nodes * dim, 0);
+        for (const auto &[row, k] : entries)
+          {
+            group.rows.push_back(row);
+            group.local.push_back(k);
+            group.in_system[k] = 1;
+          }
+        // Points whose every DoF is constrained add nothing to the matrix.
+        if (group.rows.empty())
+          assembly_groups.pop_back();
+        first = last;
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  LoadStepSystem<dim>::norm_in_system(const NodalVector &vector) const
+  {
+    double sum = 0.;
+    for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
+      if (index_in_system[i] != numbers::invalid_dof_index)
+        sum += std::pow(vector.local_element(i), 2);
+    return std::sqrt(Utilities::MPI::sum(sum, communicator));
+  }
+
+
+
+  template <int dim>
+  double
+  LoadStepSystem<dim>::set_residual(const NodalVector &external,
+                                    const NodalVector &internal)
+  {
+    for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
+      if (index_in_system[i] != numbers::invalid_dof_index)
+        rhs[index_in_system[i]] =
+          external.local_element(i) - internal.local_element(i);
+    rhs.compress(VectorOperation::insert);
+    return rhs.l2_norm();
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepSystem<dim>::add_solution_to(NodalVector &increment) const
+  {
+    for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
+      if (index_in_system[i] != numbers::invalid_dof_index)
+        increment.local_element(i) += solution[index_in_system[i]];
+    increment.update_ghost_values();
+  }
+
+
+
+  template class LoadStepSystem<2>;
+  template class LoadStepSystem<3>;
+} // namespace impm
