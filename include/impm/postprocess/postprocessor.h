@@ -1,0 +1,241 @@
+#ifndef impm_postprocess_postprocessor_h
+#define impm_postprocess_postprocessor_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <impm/base/plugin_list.h>
+#include <impm/core/parameters.h>
+#include <impm/grid/background_grid.h>
+#include <impm/points/material_points.h>
+#include <impm/solver/newton_solver.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /** @brief The solver's timed phases (TimerOutput sections), in order. */
+  inline const std::vector<std::string> solver_phases = {"basis evaluation",
+                                                         "system setup",
+                                                         "stress update",
+                                                         "assembly",
+                                                         "linear solve",
+                                                         "point update",
+                                                         "output"};
+
+  /**
+   * @brief What postprocessors may read of a run: the scene and the parts
+   * of the solver, fixed for the run.
+   */
+  template <int dim>
+  struct RunContext
+  {
+    /** The scene. */
+    const Parameters::All<dim> &parameters;
+    /** The background grid (DoFs, face conditions). */
+    const BackgroundGrid<dim> &grid;
+    /** The material points in their current state. */
+    const MaterialPoints<dim> &material_points;
+    /** One line per effect of the scene (loads, faces, stabilisation). */
+    const std::vector<std::string> &effect_descriptions;
+    /** Whether the scene has force effects (loads). */
+    const bool has_force_effects;
+    /** The solver's phase timer. */
+    TimerOutput &timer;
+    /** The processes of the run. */
+    const MPI_Comm communicator;
+    /** The columns of StepMeasure values (set by the PostprocessorManager
+     *  from all postprocessors' step_measure_columns()). */
+    std::vector<std::string> step_measure_columns = {};
+  };
+
+  /** @brief A value measured after a converged load step. */
+  struct StepMeasure
+  {
+    /** Its column in steps.csv and key in summary.json. */
+    std::string column;
+    /** Its word in the progress log. */
+    std::string label;
+    /** The value. */
+    double value;
+  };
+
+  /** @brief One attempt at a load step. */
+  struct StepRecord
+  {
+    /** Number of the load step (converged steps before it + 1). */
+    unsigned int step_number = 0;
+    /** Load factors at the start and at the target of the attempt. */
+    double start = 0., target = 0.;
+    /** The Newton solve, with the outcome the step control judged. */
+    NewtonRecord newton;
+    /** DoFs of the step's linear system. */
+    types::global_dof_index system_dofs = 0;
+    /** Largest point displacement of the solve, in cells. */
+    double point_increment = 0.;
+    /** Converged steps only: reactions per BackgroundGrid::reaction_columns()
+     *  and their imbalance (negative if not measured). */
+    std::vector<double> reactions;
+    double              reaction_imbalance = -1.;
+    /** Values measured by postprocessors (converged steps only). */
+    std::vector<StepMeasure> measures;
+
+    /** @brief Whether the attempt converged and was accepted. */
+    bool
+    converged() const
+    {
+      return newton.outcome == NewtonOutcome::converged;
+    }
+
+    /**
+     * @brief The line of the progress log (without the residual):
+     * "step   3  load 0.0750  iterations 4  error 1.2e-03" or
+     * "step   3  load 0.0750  diverged after 5 iterations: step cut".
+     */
+    std::string
+    log_line() const;
+  };
+
+  /** @brief Totals over the run's load steps, for the summaries. */
+  template <int dim>
+  struct RunStatistics
+  {
+    unsigned int n_converged_steps       = 0;
+    unsigned int n_cuts                  = 0;
+    unsigned int total_newton_iterations = 0;
+    /** Residual evaluations (stress updates). */
+    unsigned int residual_evaluations = 0;
+    /** System DoFs of the last attempt. */
+    types::global_dof_index system_dofs_last_step = 0;
+    /** Largest point displacement of an accepted step, in cells. */
+    double largest_point_increment = 0.;
+    /** Largest |sum of reactions + external force| / |external force|. */
+    double max_reaction_imbalance = 0.;
+    /** Worst condition estimate (0 if none was made). */
+    double worst_condition = 0.;
+    /** Smallest observed Newton order of the converged steps (see
+     *  NewtonRecord::observed_order()). */
+    double min_newton_order = NewtonRecord().observed_order();
+    /** Reactions and measures of the last converged step. */
+    std::vector<double>      last_reactions;
+    std::vector<StepMeasure> last_measures;
+    /** Set at the end of the run: wall time and the points' state. */
+    double             wall_time = 0.;
+    PointMeasures<dim> final_state;
+
+    /** @brief Count the attempt @p record in. */
+    void
+    add(const StepRecord &record);
+  };
+
+  /**
+   * @brief A postprocessor: writes or measures something of a run. The
+   * solver calls every postprocessor the scene asks for; it does not know
+   * what they write.
+   *
+   * Postprocessors run in the order of their names. All measure_step()
+   * calls of a step come before all after_step() calls.
+   *
+   * To add one: derive from this class in a file of source/postprocess/ and
+   * register it with IMPM_REGISTER_POSTPROCESSOR; its create function
+   * returns nullptr when the scene does not ask for it.
+   */
+  template <int dim>
+  class Postprocessor
+  {
+  public:
+    virtual ~Postprocessor() = default;
+
+    /** @brief Columns of the StepMeasure values this one adds. */
+    virtual std::vector<std::string>
+    step_measure_columns() const
+    {
+      return {};
+    }
+
+    /** @brief Called once before the first load step. */
+    virtual void
+    start(const RunContext<dim> &context);
+
+    /** @brief Add measures to a converged step's @p record. */
+    virtual void
+    measure_step(const RunContext<dim> &context, StepRecord &record);
+
+    /** @brief Called after every attempt, converged or cut. */
+    virtual void
+    after_step(const RunContext<dim>    &context,
+               const StepRecord         &record,
+               const RunStatistics<dim> &statistics);
+
+    /** @brief Called once after the full load is reached. */
+    virtual void
+    finish(const RunContext<dim> &context, const RunStatistics<dim> &statistics);
+  };
+
+  /** @brief The registry of postprocessors (see PluginList). */
+  template <int dim>
+  using PostprocessorList =
+    PluginList<Postprocessor<dim>, const RunContext<dim> &>;
+
+  /**
+   * @brief The postprocessors of a run, with its statistics: created from
+   * the registry, called in turn.
+   */
+  template <int dim>
+  class PostprocessorManager
+  {
+  public:
+    /** @brief Create every postprocessor the scene of @p context asks for. */
+    explicit PostprocessorManager(const RunContext<dim> &context);
+
+    /** @brief See Postprocessor::start(). */
+    void
+    start();
+
+    /** @brief Measure, count and write the attempt @p record. */
+    void
+    after_step(StepRecord &record);
+
+    /** @brief Measure the final state and write the run's summaries. */
+    void
+    finish(const double wall_time);
+
+  private:
+    RunContext<dim>                                  context;
+    std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
+    RunStatistics<dim>                               statistics;
+  };
+} // namespace impm
+
+/**
+ * Register @p CLASS (a template over dim with a constructor taking a
+ * RunContext) as postprocessor @p NAME, created when @p WANTED (an
+ * expression of `const RunContext<dim> &context`) holds.
+ */
+#define IMPM_REGISTER_POSTPROCESSOR(CLASS, NAME, WANTED)                   \
+  namespace                                                                \
+  {                                                                        \
+    template <int dim>                                                     \
+    bool                                                                   \
+    register_##CLASS()                                                     \
+    {                                                                      \
+      return impm::PostprocessorList<dim>::register_plugin(                \
+        {NAME,                                                             \
+         NAME,                                                             \
+         {},                                                               \
+         [](const impm::RunContext<dim> &context)                          \
+           -> std::unique_ptr<impm::Postprocessor<dim>> {                  \
+           if (!(WANTED))                                                  \
+             return nullptr;                                               \
+           return std::make_unique<CLASS<dim>>(context);                   \
+         }});                                                              \
+    }                                                                      \
+    const bool CLASS##_registered =                                        \
+      register_##CLASS<2>() && register_##CLASS<3>();                      \
+  }
+
+#endif

@@ -1,0 +1,82 @@
+#ifndef impm_solver_load_step_control_h
+#define impm_solver_load_step_control_h
+
+#include <impm/core/parameters.h>
+#include <impm/solver/newton_solver.h>
+
+#include <sstream>
+
+namespace impm
+{
+  /**
+   * @brief The load-step control: which load step to try next, and what to
+   * do with the outcome of a Newton solve.
+   *
+   * The load factor goes from 0 to 1 in 'Solver/Load steps' nominal steps.
+   * Given an outcome, the control advances (and after an easy step, with
+   * at most 'Solver/Easy iterations' iterations, doubles the step back
+   * towards the nominal one), repeats the step with half the increment
+   * ('Solver/Step control'), or stops the run with a message naming the
+   * load step and every failed attempt. The last step lands exactly on the
+   * full load.
+   */
+  class LoadStepControl
+  {
+  public:
+    /** @brief The control of the scene's 'Solver' section. */
+    explicit LoadStepControl(const Parameters::Solver &parameters);
+
+    /** @brief Whether the full load has been reached. */
+    bool
+    finished() const
+    {
+      return load_factor >= 1.;
+    }
+
+    /** @brief The load factor at the start of the next attempt. */
+    double
+    start() const
+    {
+      return load_factor;
+    }
+
+    /** @brief The load factor the next attempt aims for. */
+    double
+    target() const;
+
+    /** @brief The number of the next load step (converged steps + 1). */
+    unsigned int
+    step_number() const
+    {
+      return n_converged + 1;
+    }
+
+    /**
+     * @brief The outcome of a Newton solve as the control judges it: a
+     * converged solve that moved a point by more than 'Solver/Maximum point
+     * increment' cells (@p point_increment) is cut too, when step control
+     * is on, since the basis of the step is that of its start.
+     */
+    NewtonOutcome
+    judge(const NewtonOutcome outcome, const double point_increment) const;
+
+    /**
+     * @brief Advance or cut after an attempt with @p record (whose outcome
+     * is the judged one). Throws std::runtime_error with the message for
+     * the user when the run cannot go on.
+     */
+    void
+    update(const NewtonRecord &record);
+
+  private:
+    const Parameters::Solver &parameters;
+    const double              nominal_step;
+    double                    step_size;
+    double                    load_factor = 0.;
+    unsigned int              n_converged = 0;
+    /** Each failed attempt of the run, for the final error message. */
+    std::ostringstream failures;
+  };
+} // namespace impm
+
+#endif

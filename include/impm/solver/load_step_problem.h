@@ -1,0 +1,97 @@
+#ifndef impm_solver_load_step_problem_h
+#define impm_solver_load_step_problem_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <impm/assembly/assembler.h>
+#include <impm/assembly/ghost_stabilisation.h>
+#include <impm/grid/background_grid.h>
+#include <impm/solver/linear_solver.h>
+#include <impm/solver/newton_solver.h>
+#include <impm/system/load_step_system.h>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief The equilibrium of one load step as a NonlinearProblem: the
+   * displacement increment from the start of the step is the unknown, the
+   * residual is f_ext - f_int on the DoFs of the linear system.
+   *
+   * It owns the nodal vectors of the step and times its phases ("stress
+   * update", "assembly", "linear solve") in the solver's TimerOutput.
+   */
+  template <int dim>
+  class LoadStepProblem : public NonlinearProblem
+  {
+  public:
+    /**
+     * @brief The problem over the parts of a run.
+     * @param ghost_stabilisation May be nullptr (no stabilisation).
+     */
+    LoadStepProblem(const BackgroundGrid<dim>     &grid,
+                    LoadStepSystem<dim>           &system,
+                    Assembler<dim>                &assembler,
+                    const GhostStabilisation<dim> *ghost_stabilisation,
+                    LinearSolver                  &linear_solver,
+                    TimerOutput                   &timer);
+
+    /**
+     * @brief Start a step from load factor @p start to @p target: the
+     * increment is zero but on the prescribed faces, which move by their
+     * share; the external force is that of @p target.
+     */
+    void
+    begin(const double start, const double target);
+
+    Residual
+    evaluate_residual() override;
+
+    void
+    assemble_matrix() override;
+
+    double
+    solve_and_update(const bool estimate_condition) override;
+
+    /**
+     * @brief The largest displacement of a point in the current increment,
+     * in cells (the largest over directions of |u_d| / h_d).
+     */
+    double
+    max_point_increment() const;
+
+    /** @brief The displacement increment of the current iterate. */
+    const NodalVector &
+    increment() const
+    {
+      return displacement_increment;
+    }
+
+    /** @brief The reactions of the current iterate, per face and component. */
+    typename BackgroundGrid<dim>::Reactions
+    reactions() const
+    {
+      return grid.compute_reactions(internal_force, external_force);
+    }
+
+  private:
+    const BackgroundGrid<dim>     &grid;
+    LoadStepSystem<dim>           &system;
+    Assembler<dim>                &assembler;
+    const GhostStabilisation<dim> *ghost_stabilisation;
+    LinearSolver                  &linear_solver;
+    TimerOutput                   &timer;
+
+    /** Displacement increment of the step (full numbering, ghosted). */
+    NodalVector displacement_increment;
+    /** Internal and external nodal forces (full numbering). */
+    NodalVector internal_force;
+    NodalVector external_force;
+    /** Norm of the external force on the system's DoFs. */
+    double external_force_norm = 0.;
+  };
+} // namespace impm
+
+#endif

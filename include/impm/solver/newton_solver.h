@@ -1,0 +1,143 @@
+#ifndef impm_solver_newton_solver_h
+#define impm_solver_newton_solver_h
+
+#include <impm/core/parameters.h>
+
+#include <array>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace impm
+{
+  /** @brief Why a Newton solve stopped. */
+  enum class NewtonOutcome
+  {
+    /** The relative residual fell below 'Solver/Tolerance'. */
+    converged,
+    /** 'Solver/Maximum iterations' were spent. */
+    iteration_limit,
+    /** The residual grew past 'Solver/Divergence factor' times the first. */
+    diverged,
+    /** The residual is not a finite number. */
+    not_finite,
+    /** A point's deformation increment has J <= 0. */
+    inverted_point,
+    /** Converged, but a point moved more than 'Solver/Maximum point
+     *  increment' cells (set by the load-step control, not by Newton). */
+    increment_too_large
+  };
+
+  /** @brief The words for each NewtonOutcome, as the log and errors print. */
+  constexpr std::array<const char *, 6> newton_outcome_names = {
+    {"converged",
+     "iteration limit",
+     "diverged",
+     "non-finite residual",
+     "inverted point",
+     "point increment too large"}};
+
+  /** @brief The name of @p outcome. */
+  inline std::string
+  name_of(const NewtonOutcome outcome)
+  {
+    return newton_outcome_names[static_cast<unsigned int>(outcome)];
+  }
+
+  /**
+   * @brief The nonlinear problem a NewtonSolver solves: the residual of the
+   * current iterate, the matrix, and the update by a linear solve.
+   */
+  class NonlinearProblem
+  {
+  public:
+    virtual ~NonlinearProblem() = default;
+
+    /** @brief The residual of the current iterate. */
+    struct Residual
+    {
+      /** False if the iterate is inadmissible (an inverted point). */
+      bool admissible = true;
+      /** The residual norm relative to the problem's force scale. */
+      double relative = 0.;
+    };
+
+    /** @brief Evaluate the residual of the current iterate. */
+    virtual Residual
+    evaluate_residual() = 0;
+
+    /** @brief Assemble the tangent matrix of the current iterate. */
+    virtual void
+    assemble_matrix() = 0;
+
+    /**
+     * @brief Solve with the last matrix and residual and add the correction
+     * to the iterate.
+     * @return The condition estimate of the matrix if @p estimate_condition
+     * (0 if the linear solver cannot estimate it).
+     */
+    virtual double
+    solve_and_update(const bool estimate_condition) = 0;
+  };
+
+  /** @brief What one Newton solve did. */
+  struct NewtonRecord
+  {
+    /** Why it stopped. */
+    NewtonOutcome outcome = NewtonOutcome::converged;
+    /** Relative residual of each iterate, the start included. */
+    std::vector<double> residuals;
+    /** Condition estimate of the first matrix (0 if not estimated). */
+    double condition_estimate = 0.;
+
+    /** @brief Newton iterations made (linear solves). */
+    unsigned int
+    n_iterations() const
+    {
+      return residuals.empty() ? 0 : residuals.size() - 1;
+    }
+
+    /** @brief The last relative residual (NaN if none was evaluated). */
+    double
+    final_residual() const
+    {
+      return residuals.empty() ? std::numeric_limits<double>::quiet_NaN() :
+                                 residuals.back();
+    }
+
+    /**
+     * @brief The smallest observed order log r_{k+1} / log r_k over the
+     * contractions near the solution (r_k < 1e-3) and above round-off
+     * (r_{k+1} > 1e-10): about 2 for full Newton. Returns the largest
+     * double if no pair qualifies (see is_measured()).
+     */
+    double
+    observed_order() const;
+
+    /** @brief Whether observed_order() had a residual pair to measure. */
+    static bool
+    is_measured(const double order);
+  };
+
+  /**
+   * @brief Full Newton iteration with the checks of 'Solver': stops when the
+   * relative residual falls below the tolerance, grows past the divergence
+   * factor, is not finite, the iterate is inadmissible, or the iterations
+   * run out.
+   */
+  class NewtonSolver
+  {
+  public:
+    /** @brief A solver with the scene's tolerances and limits. */
+    explicit NewtonSolver(const Parameters::Solver &parameters);
+
+    /** @brief Iterate on @p problem from its current iterate. */
+    NewtonRecord
+    solve(NonlinearProblem &problem) const;
+
+  private:
+    const Parameters::Solver &parameters;
+  };
+} // namespace impm
+
+#endif

@@ -1,0 +1,138 @@
+#include <deal.II/base/utilities.h>
+
+#include <impm/base/names.h>
+#include <impm/io/point_output.h>
+#include <impm/postprocess/postprocessor.h>
+
+#include <cmath>
+
+namespace impm
+{
+  namespace
+  {
+    /**
+     * @brief The points as VTU files with a .pvd series ('Output/Interval'
+     * > 0): at the start, every 'Interval' converged steps and at full
+     * load, with the 'Output/Fields' the scene asks for among those its
+     * points have.
+     */
+    template <int dim>
+    class PointFiles : public Postprocessor<dim>
+    {
+    public:
+      /** @brief Files in the scene's output directory. */
+      explicit PointFiles(const RunContext<dim> &context)
+        : output(context.parameters.scene.output_directory,
+                 "points",
+                 context.communicator)
+      {
+        const auto &fields = context.parameters.output.fields;
+        const auto &layout = context.material_points.layout();
+        plastic_multiplier =
+          fields.plastic_multiplier &&
+          layout.plastic_multiplier != PointLayout::absent;
+        body = fields.body && layout.body != PointLayout::absent;
+        for (unsigned int d = 0; d < dim && fields.displacement; ++d)
+          add("displacement", true);
+        for (unsigned int d = 0; d < dim && fields.initial_position; ++d)
+          add("initial_position", true);
+        for (unsigned int i = 0; i < 3 && fields.stress; ++i)
+          for (unsigned int j = i; j < 3; ++j)
+            add(std::string("stress_") + Names::axis(i) + Names::axis(j),
+                false);
+        if (fields.von_mises_stress)
+          add("von_mises_stress", false);
+        if (plastic_multiplier)
+          add("plastic_multiplier", false);
+        if (fields.volume)
+          add("volume", false);
+        if (fields.rank)
+          add("rank", false);
+        if (body)
+          add("body", false);
+      }
+
+      void
+      start(const RunContext<dim> &context) override
+      {
+        write(context, 0., 0);
+      }
+
+      void
+      after_step(const RunContext<dim> &context,
+                 const StepRecord      &record,
+                 const RunStatistics<dim> &) override
+      {
+        const unsigned int interval = context.parameters.output.interval;
+        if (record.converged() &&
+            (record.step_number % interval == 0 || record.target == 1.))
+          write(context, record.target, record.step_number);
+      }
+
+    private:
+      /** Add the output column @p name (a vector component if @p vector). */
+      void
+      add(const std::string &name, const bool vector)
+      {
+        names.push_back(name);
+        is_vector.push_back(vector);
+      }
+
+      /** Write the points at load factor @p load_factor. */
+      void
+      write(const RunContext<dim> &context,
+            const double           load_factor,
+            const unsigned int     load_step)
+      {
+        TimerOutput::Scope scope(context.timer, "output");
+        const auto        &fields    = context.parameters.output.fields;
+        const auto        &points    = context.material_points;
+        const double       this_rank = Utilities::MPI::this_mpi_process(
+          context.communicator);
+        output.begin(points.n_local_points(), names, is_vector);
+        std::vector<double> values(names.size());
+        unsigned int        p = 0;
+        for (const auto &point : points.particles())
+          {
+            const PointState<dim> state(point.get_properties());
+            const Point<dim>      X = state.initial_position();
+            const double          J = state.jacobian();
+            const SymmetricTensor<2, 3> sigma = state.kirchhoff_stress() / J;
+            unsigned int                c     = 0;
+            for (unsigned int d = 0; d < dim && fields.displacement; ++d)
+              values[c++] = point.get_location()[d] - X[d];
+            for (unsigned int d = 0; d < dim && fields.initial_position; ++d)
+              values[c++] = X[d];
+            for (unsigned int i = 0; i < 3 && fields.stress; ++i)
+              for (unsigned int j = i; j < 3; ++j)
+                values[c++] = sigma[i][j];
+            if (fields.von_mises_stress)
+              {
+                const SymmetricTensor<2, 3> s = deviator(sigma);
+                values[c++]                   = std::sqrt(1.5 * (s * s));
+              }
+            if (plastic_multiplier)
+              values[c++] =
+                point.get_properties()[points.layout().plastic_multiplier];
+            if (fields.volume)
+              values[c++] = J * state.initial_volume();
+            if (fields.rank)
+              values[c++] = this_rank;
+            if (body)
+              values[c++] = points.body_of(point.get_properties()) + 1;
+            output.set_point(p++, point.get_location(), values);
+          }
+        output.write(load_factor, load_step);
+      }
+
+      PointOutput<dim>         output;
+      std::vector<std::string> names;
+      std::vector<bool>        is_vector;
+      bool                     plastic_multiplier;
+      bool                     body;
+    };
+  } // namespace
+  IMPM_REGISTER_POSTPROCESSOR(PointFiles,
+                            "point files",
+                            context.parameters.output.interval > 0)
+} // namespace impm

@@ -1,0 +1,147 @@
+#include <impm/postprocess/postprocessor.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
+
+namespace impm
+{
+  std::string
+  StepRecord::log_line() const
+  {
+    std::ostringstream line;
+    line << "step " << std::setw(3) << step_number << "  load " << std::fixed
+         << std::setprecision(4) << target;
+    if (converged())
+      {
+        line << "  iterations " << newton.n_iterations();
+        for (const StepMeasure &measure : measures)
+          {
+            char buffer[32];
+            std::snprintf(buffer, sizeof(buffer), "%.4e", measure.value);
+            line << "  " << measure.label << ' ' << buffer;
+          }
+      }
+    else
+      line << "  " << name_of(newton.outcome) << " after "
+           << newton.n_iterations() << " iterations: step cut";
+    return line.str();
+  }
+
+
+
+  template <int dim>
+  void
+  RunStatistics<dim>::add(const StepRecord &record)
+  {
+    total_newton_iterations += record.newton.n_iterations();
+    residual_evaluations += record.newton.residuals.size();
+    system_dofs_last_step = record.system_dofs;
+    worst_condition = std::max(worst_condition, record.newton.condition_estimate);
+    if (!record.converged())
+      {
+        ++n_cuts;
+        return;
+      }
+    ++n_converged_steps;
+    largest_point_increment =
+      std::max(largest_point_increment, record.point_increment);
+    max_reaction_imbalance =
+      std::max(max_reaction_imbalance, record.reaction_imbalance);
+    min_newton_order =
+      std::min(min_newton_order, record.newton.observed_order());
+    last_reactions = record.reactions;
+    last_measures  = record.measures;
+  }
+
+
+
+  template <int dim>
+  void
+  Postprocessor<dim>::start(const RunContext<dim> &)
+  {}
+
+
+
+  template <int dim>
+  void
+  Postprocessor<dim>::measure_step(const RunContext<dim> &, StepRecord &)
+  {}
+
+
+
+  template <int dim>
+  void
+  Postprocessor<dim>::after_step(const RunContext<dim> &,
+                                 const StepRecord &,
+                                 const RunStatistics<dim> &)
+  {}
+
+
+
+  template <int dim>
+  void
+  Postprocessor<dim>::finish(const RunContext<dim> &, const RunStatistics<dim> &)
+  {}
+
+
+
+  template <int dim>
+  PostprocessorManager<dim>::PostprocessorManager(
+    const RunContext<dim> &run_context)
+    : context(run_context)
+  {
+    for (const auto &entry : PostprocessorList<dim>::entries())
+      if (auto postprocessor = entry.create(context))
+        postprocessors.push_back(std::move(postprocessor));
+    for (const auto &postprocessor : postprocessors)
+      for (const std::string &column : postprocessor->step_measure_columns())
+        context.step_measure_columns.push_back(column);
+  }
+
+
+
+  template <int dim>
+  void
+  PostprocessorManager<dim>::start()
+  {
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->start(context);
+  }
+
+
+
+  template <int dim>
+  void
+  PostprocessorManager<dim>::after_step(StepRecord &record)
+  {
+    if (record.converged())
+      for (const auto &postprocessor : postprocessors)
+        postprocessor->measure_step(context, record);
+    statistics.add(record);
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->after_step(context, record, statistics);
+  }
+
+
+
+  template <int dim>
+  void
+  PostprocessorManager<dim>::finish(const double wall_time)
+  {
+    statistics.wall_time   = wall_time;
+    statistics.final_state = context.material_points.measure();
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->finish(context, statistics);
+  }
+
+
+
+  template struct RunStatistics<2>;
+  template struct RunStatistics<3>;
+  template class Postprocessor<2>;
+  template class Postprocessor<3>;
+  template class PostprocessorManager<2>;
+  template class PostprocessorManager<3>;
+} // namespace impm

@@ -1,0 +1,179 @@
+#include <deal.II/base/utilities.h>
+
+#include <impm/base/names.h>
+#include <impm/io/log_file.h>
+#include <impm/postprocess/postprocessor.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <iostream>
+#include <map>
+
+namespace impm
+{
+  namespace
+  {
+    /** Whether this process writes the run's shared files. */
+    bool
+    is_root(const MPI_Comm communicator)
+    {
+      return Utilities::MPI::this_mpi_process(communicator) == 0;
+    }
+
+
+
+    /**
+     * @brief `steps.csv`: one row per load-step attempt with its load,
+     * Newton iterations, final residual, system size, the step measures, the
+     * reactions per face and component, and the time of each phase. A cut
+     * attempt leaves its measures and reactions empty.
+     */
+    template <int dim>
+    class StepsFile : public Postprocessor<dim>
+    {
+    public:
+      /** @brief Nothing is opened before start(). */
+      explicit StepsFile(const RunContext<dim> &)
+      {}
+
+      void
+      start(const RunContext<dim> &context) override
+      {
+        if (!is_root(context.communicator))
+          return;
+        file.open(context.parameters.scene.output_directory + "/steps.csv");
+        auto &out = file.stream();
+        out << "step,load_factor,load_increment,converged,"
+               "newton_iterations,relative_residual,system_dofs";
+        for (const std::string &column : context.step_measure_columns)
+          out << ',' << column;
+        for (const unsigned int c : context.grid.reaction_columns())
+          out << ",reaction_" << Names::face(c / dim) << '_'
+              << Names::axis(c % dim);
+        for (std::string phase : solver_phases)
+          {
+            std::replace(phase.begin(), phase.end(), ' ', '_');
+            out << ",time_" << phase;
+          }
+        out << '\n';
+        file.flush();
+      }
+
+      void
+      after_step(const RunContext<dim> &context,
+                 const StepRecord      &record,
+                 const RunStatistics<dim> &) override
+      {
+        const auto times =
+          context.timer.get_summary_data(TimerOutput::total_wall_time);
+        if (!is_root(context.communicator))
+          return;
+        auto &out = file.stream();
+        out << record.step_number << ',' << std::setprecision(10)
+            << record.target << ',' << record.target - record.start << ','
+            << (record.converged() ? 1 : 0) << ','
+            << record.newton.n_iterations() << ','
+            << record.newton.final_residual() << ',' << record.system_dofs;
+        for (unsigned int m = 0; m < context.step_measure_columns.size(); ++m)
+          {
+            out << ',';
+            if (record.converged())
+              out << record.measures[m].value;
+          }
+        for (unsigned int r = 0; r < context.grid.reaction_columns().size();
+             ++r)
+          {
+            out << ',';
+            if (record.converged())
+              out << record.reactions[context.grid.reaction_columns()[r]];
+          }
+        for (const auto &phase : solver_phases)
+          {
+            const double now = times.count(phase) ? times.at(phase) : 0.;
+            out << ',' << now - previous_times[phase];
+            previous_times[phase] = now;
+          }
+        out << '\n';
+        file.flush();
+      }
+
+    private:
+      LogFile                       file;
+      std::map<std::string, double> previous_times;
+    };
+
+
+
+    /**
+     * @brief `newton.csv`: the relative residual of every Newton iterate of
+     * every attempt.
+     */
+    template <int dim>
+    class NewtonFile : public Postprocessor<dim>
+    {
+    public:
+      /** @brief Nothing is opened before start(). */
+      explicit NewtonFile(const RunContext<dim> &)
+      {}
+
+      void
+      start(const RunContext<dim> &context) override
+      {
+        if (!is_root(context.communicator))
+          return;
+        file.open(context.parameters.scene.output_directory + "/newton.csv");
+        file.stream() << "step,iteration,relative_residual\n"
+                      << std::setprecision(6);
+        file.flush();
+      }
+
+      void
+      after_step(const RunContext<dim> &context,
+                 const StepRecord      &record,
+                 const RunStatistics<dim> &) override
+      {
+        if (!is_root(context.communicator))
+          return;
+        for (unsigned int k = 0; k < record.newton.residuals.size(); ++k)
+          file.stream() << record.step_number << ',' << k << ','
+                        << record.newton.residuals[k] << '\n';
+        file.flush();
+      }
+
+    private:
+      LogFile file;
+    };
+
+
+
+    /**
+     * @brief The progress log on the terminal: one line per attempt (not in
+     * test mode, whose summary prints the lines itself).
+     */
+    template <int dim>
+    class ProgressLog : public Postprocessor<dim>
+    {
+    public:
+      /** @brief Nothing to set up. */
+      explicit ProgressLog(const RunContext<dim> &)
+      {}
+
+      void
+      after_step(const RunContext<dim> &context,
+                 const StepRecord      &record,
+                 const RunStatistics<dim> &) override
+      {
+        if (!is_root(context.communicator))
+          return;
+        std::cout << record.log_line() << "  residual " << std::scientific
+                  << std::setprecision(2) << record.newton.final_residual()
+                  << std::defaultfloat << std::endl;
+      }
+    };
+  } // namespace
+  IMPM_REGISTER_POSTPROCESSOR(StepsFile, "steps file", true)
+  IMPM_REGISTER_POSTPROCESSOR(NewtonFile, "newton file", true)
+  IMPM_REGISTER_POSTPROCESSOR(ProgressLog,
+                            "progress log",
+                            !context.parameters.testing.enabled)
+} // namespace impm

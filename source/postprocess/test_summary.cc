@@ -1,0 +1,262 @@
+#include <deal.II/base/utilities.h>
+
+#include <impm/base/names.h>
+#include <impm/postprocess/column_solution.h>
+#include <impm/postprocess/postprocessor.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <tuple>
+
+namespace impm
+{
+  namespace
+  {
+    /** A point's id and its printed values: X, u, sigma_vertical, sigma_xx. */
+    using PointValues =
+      std::pair<types::particle_index, std::vector<double>>;
+
+    /**
+     * @brief The summary a test compares ('Testing/Enabled'): the log lines,
+     * the run's totals and checks, the final state, and the points with the
+     * lowest ids and those nearest the probes.
+     */
+    template <int dim>
+    class TestSummary : public Postprocessor<dim>
+    {
+    public:
+      /** @brief Nothing to set up. */
+      explicit TestSummary(const RunContext<dim> &)
+      {}
+
+      void
+      after_step(const RunContext<dim> &,
+                 const StepRecord &record,
+                 const RunStatistics<dim> &) override
+      {
+        log_lines.push_back(record.log_line());
+      }
+
+      void
+      finish(const RunContext<dim>    &context,
+             const RunStatistics<dim> &statistics) override
+      {
+        const auto   points    = printed_points(context);
+        const double deviation = context.parameters.output.analytical_solution ==
+                                     Parameters::AnalyticalSolution::column ?
+                                   ColumnSolution<dim>::max_deviation(context) :
+                                   -1.;
+        if (Utilities::MPI::this_mpi_process(context.communicator) != 0)
+          return;
+        print_run(context, statistics, deviation);
+        print_points(context, points);
+        std::cout << std::flush;
+      }
+
+    private:
+      /** The values of the points to print (on rank 0; collective). */
+      std::vector<PointValues>
+      printed_points(const RunContext<dim> &context) const;
+
+      /** Print the log lines, totals, checks and final state. */
+      void
+      print_run(const RunContext<dim>    &context,
+                const RunStatistics<dim> &statistics,
+                const double              column_deviation) const;
+
+      /** Print one line per point. */
+      void
+      print_points(const RunContext<dim>          &context,
+                   const std::vector<PointValues> &points) const;
+
+      std::vector<std::string> log_lines;
+    };
+
+
+
+    template <int dim>
+    std::vector<PointValues>
+    TestSummary<dim>::printed_points(const RunContext<dim> &context) const
+    {
+      const auto &testing = context.parameters.testing;
+      std::vector<PointValues> local;
+      for (const auto &point : context.material_points.particles())
+        {
+          const PointState<dim>       state(point.get_properties());
+          const Point<dim>            X     = state.initial_position();
+          const double                J     = state.jacobian();
+          const SymmetricTensor<2, 3> tau   = state.kirchhoff_stress();
+          std::vector<double>         values;
+          for (unsigned int d = 0; d < dim; ++d)
+            values.push_back(X[d]);
+          for (unsigned int d = 0; d < dim; ++d)
+            values.push_back(point.get_location()[d] - X[d]);
+          values.push_back(tau[dim - 1][dim - 1] / J);
+          values.push_back(tau[0][0] / J);
+          local.emplace_back(point.get_id(), values);
+        }
+      // The points nearest to the probe positions (smallest distance, then
+      // smallest id), found among all processes' points.
+      std::vector<PointValues> probed;
+      for (const auto &probe : testing.probes)
+        {
+          std::tuple<double, types::particle_index, std::vector<double>>
+            nearest(std::numeric_limits<double>::max(), 0, {});
+          for (const auto &[id, values] : local)
+            {
+              double distance = 0.;
+              for (unsigned int d = 0; d < dim; ++d)
+                distance += std::pow(values[d] - probe[d], 2);
+              nearest =
+                std::min(nearest, std::make_tuple(distance, id, values));
+            }
+          const auto all =
+            Utilities::MPI::all_gather(context.communicator, nearest);
+          const auto best = *std::min_element(all.begin(), all.end());
+          probed.emplace_back(std::get<1>(best), std::get<2>(best));
+        }
+      // The lowest ids of each process, merged on rank 0.
+      std::sort(local.begin(), local.end());
+      if (local.size() > testing.n_printed_points)
+        local.resize(testing.n_printed_points);
+      const auto gathered =
+        Utilities::MPI::gather(context.communicator, local, 0);
+      std::vector<PointValues> all;
+      for (const auto &part : gathered)
+        all.insert(all.end(), part.begin(), part.end());
+      std::sort(all.begin(), all.end());
+      if (all.size() > testing.n_printed_points)
+        all.resize(testing.n_printed_points);
+      all.insert(all.end(), probed.begin(), probed.end());
+      return all;
+    }
+
+
+
+    template <int dim>
+    void
+    TestSummary<dim>::print_run(const RunContext<dim>    &context,
+                                const RunStatistics<dim> &statistics,
+                                const double              column_deviation) const
+    {
+      const auto &parameters = context.parameters;
+      const auto &state      = statistics.final_state;
+      for (const auto &line : log_lines)
+        std::cout << line << '\n';
+      std::cout << "observed Newton order near the solution >= 1.7 in every "
+                   "step: "
+                << (statistics.min_newton_order >= 1.7 ? "yes" : "NO") << '\n';
+      std::cout << "material points: "
+                << context.material_points.n_global_points()
+                << ", total Newton iterations: "
+                << statistics.total_newton_iterations
+                << ", load-step cuts: " << statistics.n_cuts << '\n';
+      char buffer[160];
+      std::snprintf(buffer,
+                    sizeof(buffer),
+                    "total mass: %.8e (initial %.8e)\n",
+                    state.total_mass,
+                    context.material_points.initial_mass());
+      std::cout << buffer;
+      const auto &reaction_columns = context.grid.reaction_columns();
+      if (!reaction_columns.empty() && context.has_force_effects)
+        std::cout << "reactions balance the load to 1e-8 in every step: "
+                  << (statistics.max_reaction_imbalance < 1e-8 ? "yes" : "NO")
+                  << '\n';
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          std::snprintf(buffer,
+                        sizeof(buffer),
+                        "extent in %s: initial points [%.4f, %.4f], final "
+                        "[%.4f, %.4f]\n",
+                        Names::axes[d],
+                        state.initial_min[d],
+                        state.initial_max[d],
+                        state.current_min[d],
+                        state.current_max[d]);
+          std::cout << buffer;
+        }
+      const auto &testing = parameters.testing;
+      if (testing.reference_extent.size() == dim)
+        {
+          double distance = 0.;
+          for (unsigned int d = 0; d < dim; ++d)
+            distance = std::max(distance,
+                                std::abs(state.current_max[d] -
+                                         testing.reference_extent[d]));
+          std::cout << "final extent within " << testing.reference_tolerance
+                    << " m of the reference: "
+                    << (distance <= testing.reference_tolerance ? "yes" : "NO")
+                    << '\n';
+        }
+      std::snprintf(buffer,
+                    sizeof(buffer),
+                    "largest vertical stress (tension positive): %.4e\n",
+                    state.max_tensile_vertical_stress);
+      std::cout << buffer;
+      if (column_deviation >= 0.)
+        {
+          std::snprintf(buffer,
+                        sizeof(buffer),
+                        "stress oscillation max |sigma_zz - exact| / "
+                        "(rho_0 g l0): %.4e\n",
+                        column_deviation);
+          std::cout << buffer;
+        }
+      if (parameters.solver.estimate_condition)
+        {
+          std::snprintf(buffer,
+                        sizeof(buffer),
+                        "worst condition estimate: %.0e\n",
+                        statistics.worst_condition);
+          std::cout << buffer;
+        }
+      for (const unsigned int c : reaction_columns)
+        {
+          std::snprintf(buffer,
+                        sizeof(buffer),
+                        "final reaction on face %s, component %s: %.6e\n",
+                        Names::faces[c / dim],
+                        Names::axes[c % dim],
+                        statistics.last_reactions[c]);
+          std::cout << buffer;
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    TestSummary<dim>::print_points(const RunContext<dim>          &context,
+                                   const std::vector<PointValues> &points) const
+    {
+      const int digits = context.parameters.testing.significant_digits;
+      char      buffer[40];
+      for (const auto &[id, values] : points)
+        {
+          std::cout << "point " << id << ": X =";
+          for (unsigned int d = 0; d < dim; ++d)
+            std::cout << ' ' << std::setprecision(digits) << values[d];
+          std::cout << ", u =";
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              std::snprintf(
+                buffer, sizeof(buffer), " %.*e", digits - 1, values[dim + d]);
+              std::cout << buffer;
+            }
+          std::snprintf(
+            buffer, sizeof(buffer), "%.*e", digits - 1, values[2 * dim]);
+          std::cout << ", sigma_vertical = " << buffer;
+          std::snprintf(
+            buffer, sizeof(buffer), "%.*e", digits - 1, values[2 * dim + 1]);
+          std::cout << ", sigma_xx = " << buffer << '\n';
+        }
+    }
+  } // namespace
+  IMPM_REGISTER_POSTPROCESSOR(TestSummary,
+                            "test summary",
+                            context.parameters.testing.enabled)
+} // namespace impm

@@ -1,0 +1,70 @@
+#include <impm/solver/load_step_control.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace impm
+{
+  LoadStepControl::LoadStepControl(const Parameters::Solver &parameters)
+    : parameters(parameters)
+    , nominal_step(1. / parameters.n_load_steps)
+    , step_size(nominal_step)
+  {}
+
+
+
+  double
+  LoadStepControl::target() const
+  {
+    return (load_factor + step_size > 1. - 1e-12) ? 1. :
+                                                    load_factor + step_size;
+  }
+
+
+
+  NewtonOutcome
+  LoadStepControl::judge(const NewtonOutcome outcome,
+                         const double        point_increment) const
+  {
+    if (outcome == NewtonOutcome::converged && parameters.step_control &&
+        point_increment > parameters.maximum_point_increment)
+      return NewtonOutcome::increment_too_large;
+    return outcome;
+  }
+
+
+
+  void
+  LoadStepControl::update(const NewtonRecord &record)
+  {
+    const double next = target();
+    if (record.outcome == NewtonOutcome::converged)
+      {
+        ++n_converged;
+        load_factor = next;
+        if (parameters.step_control &&
+            record.n_iterations() <= parameters.easy_iterations)
+          step_size = std::min(2. * step_size, nominal_step);
+        return;
+      }
+
+    failures << "\n  load " << next << " (increment " << next - load_factor
+             << "): " << name_of(record.outcome) << ", relative residuals:";
+    for (const double residual : record.residuals)
+      failures << ' ' << residual;
+    std::ostringstream message;
+    message << "Load step " << n_converged + 1 << " (from load factor "
+            << load_factor << " to " << next << "): Newton "
+            << name_of(record.outcome) << '.';
+    if (!parameters.step_control)
+      throw std::runtime_error(message.str() +
+                               " Relative residuals:" + failures.str());
+    step_size /= 2.;
+    if (step_size < parameters.minimum_step)
+      throw std::runtime_error(
+        message.str() +
+        " The load increment would fall below 'Solver/Minimum load step' = " +
+        std::to_string(parameters.minimum_step) +
+        ". Attempts:" + failures.str());
+  }
+} // namespace impm

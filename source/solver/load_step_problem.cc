@@ -1,0 +1,125 @@
+#include <impm/solver/load_step_problem.h>
+
+namespace impm
+{
+  template <int dim>
+  LoadStepProblem<dim>::LoadStepProblem(
+    const BackgroundGrid<dim>     &grid,
+    LoadStepSystem<dim>           &system,
+    Assembler<dim>                &assembler,
+    const GhostStabilisation<dim> *ghost_stabilisation,
+    LinearSolver                  &linear_solver,
+    TimerOutput                   &timer)
+    : grid(grid)
+    , system(system)
+    , assembler(assembler)
+    , ghost_stabilisation(ghost_stabilisation)
+    , linear_solver(linear_solver)
+    , timer(timer)
+  {
+    grid.reinit_vector(displacement_increment);
+    grid.reinit_vector(internal_force);
+    grid.reinit_vector(external_force);
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepProblem<dim>::begin(const double start, const double target)
+  {
+    displacement_increment = 0.;
+    grid.apply_prescribed_increment(target - start, displacement_increment);
+    TimerOutput::Scope scope(timer, "assembly");
+    assembler.assemble_external_force(target, external_force);
+    external_force_norm = system.norm_in_system(external_force);
+  }
+
+
+
+  template <int dim>
+  NonlinearProblem::Residual
+  LoadStepProblem<dim>::evaluate_residual()
+  {
+    Residual residual;
+    {
+      TimerOutput::Scope scope(timer, "stress update");
+      residual.admissible = assembler.update_stresses(displacement_increment);
+    }
+    if (!residual.admissible)
+      return residual;
+
+    TimerOutput::Scope scope(timer, "assembly");
+    internal_force = 0.;
+    assembler.add_internal_force(internal_force);
+    if (ghost_stabilisation != nullptr)
+      ghost_stabilisation->add_forces(displacement_increment, internal_force);
+    internal_force.compress(VectorOperation::add);
+    const double norm = system.set_residual(external_force, internal_force);
+    // Without external loads (a prescribed displacement), the residual is
+    // measured against the internal forces, which carry the reactions.
+    double reference = external_force_norm;
+    if (reference == 0.)
+      reference = internal_force.l2_norm();
+    if (reference == 0.)
+      reference = 1.;
+    residual.relative = norm / reference;
+    return residual;
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepProblem<dim>::assemble_matrix()
+  {
+    TimerOutput::Scope scope(timer, "assembly");
+    system.matrix = 0.;
+    assembler.add_stiffness(system.matrix);
+    if (ghost_stabilisation != nullptr)
+      ghost_stabilisation->add_matrix(system, system.matrix);
+    system.matrix.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  double
+  LoadStepProblem<dim>::solve_and_update(const bool estimate_condition)
+  {
+    TimerOutput::Scope scope(timer, "linear solve");
+    linear_solver.solve(system.matrix,
+                        system.solution,
+                        system.rhs,
+                        estimate_condition);
+    system.add_solution_to(displacement_increment);
+    return estimate_condition ? linear_solver.condition_estimate() : 0.;
+  }
+
+
+
+  template <int dim>
+  double
+  LoadStepProblem<dim>::max_point_increment() const
+  {
+    const auto  &cell_size = grid.cartesian().cell_size;
+    double       largest   = 0.;
+    for (const PointStep<dim> &step : system.point_steps)
+      {
+        Tensor<1, dim> displacement;
+        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            displacement[i] +=
+              step.support.weights[v] *
+              displacement_increment.local_element(step.dofs[v * dim + i]);
+        for (unsigned int d = 0; d < dim; ++d)
+          largest = std::max(largest, std::abs(displacement[d]) / cell_size[d]);
+      }
+    return Utilities::MPI::max(largest, grid.get_triangulation().get_communicator());
+  }
+
+
+
+  template class LoadStepProblem<2>;
+  template class LoadStepProblem<3>;
+} // namespace impm
