@@ -185,11 +185,12 @@ main()
     SymmetricTensor<2, 3> eps_trial;
     eps_trial[0][0]                       = e;
     const SymmetricTensor<2, 3> dev_trial = deviator(eps_trial);
-    const double                rho_trial = 2. * material.shear_modulus() * dev_trial.norm();
-    const SymmetricTensor<2, 3> n         = dev_trial / dev_trial.norm();
-    const double p_trial = trace(material.lame_first_parameter() * trace(eps_trial) * I +
-                                 2. * material.shear_modulus() * eps_trial) /
-                           3.;
+    const double rho_trial = 2. * material.shear_modulus() * dev_trial.norm();
+    const SymmetricTensor<2, 3> n = dev_trial / dev_trial.norm();
+    const double                p_trial =
+      trace(material.lame_first_parameter() * trace(eps_trial) * I +
+            2. * material.shear_modulus() * eps_trial) /
+      3.;
     compare("rho_tr", rho_trial, 31403.7146511);
     compare("return ratio", result.return_ratio, 0.636867333124);
     compare("return ratio vs rho_y/rho_tr",

@@ -483,7 +483,9 @@ def case4(run):
         for line in so.splitlines():
             if line.startswith("extent in y") or line.startswith("point 0"):
                 note("  " + line)
-        ymax = [float(v) for v in re.search(
+        # Extents are printed in the reference length L of the scales line.
+        length = float(re.search(r"scales: L = (\S+) m", so).group(1))
+        ymax = [length * float(v) for v in re.search(
             r"extent in y: initial points \[\S+, (\S+)\], final \[\S+, "
             r"(\S+)\]", so).groups()]
         nu = 0.49 if "incompressible" in name else 0.0
@@ -712,13 +714,13 @@ def collapse(result):
     s, pts, so, out = result
     st = read_csv(os.path.join(out, "steps.csv"))
     weight = st["load_factor"] * 64000 * 10
-    rel = np.abs(st["reaction_ymin_y"] - weight) / weight
+    rel = np.abs(st["reaction_y-_y"] - weight) / weight
     note("  max_tensile_vertical_stress = %.6g Pa" %
          s["max_tensile_vertical_stress"])
     note("  max_reaction_imbalance = %.3g" % s["max_reaction_imbalance"])
     note("  base reaction vs weight: largest relative difference %.2e "
          "(step %d); at the last step %.6g N vs %.6g N" %
-         (rel.max(), st["step"][np.argmax(rel)], st["reaction_ymin_y"][-1],
+         (rel.max(), st["step"][np.argmax(rel)], st["reaction_y-_y"][-1],
           weight[-1]))
     tens = pts["stress_yy"] > 0
     note("  final points: %d, with stress_yy > 0: %d; largest final "
@@ -779,8 +781,8 @@ def collapse(result):
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 3.8))
     ax1.plot(st["step"], weight / 1e3, "k-", label="load factor x 64000 kg "
              "x 10 m/s^2")
-    ax1.plot(st["step"], st["reaction_ymin_y"] / 1e3, "o", ms=4, mfc="none",
-             color="tab:blue", label="reaction_ymin_y")
+    ax1.plot(st["step"], st["reaction_y-_y"] / 1e3, "o", ms=4, mfc="none",
+             color="tab:blue", label="reaction_y-_y")
     ax1b = ax1.twinx()
     ax1b.semilogy(st["step"], np.maximum(rel, 1e-17), "r.", ms=4)
     ax1b.set_ylabel("|reaction - weight| / weight", color="r")

@@ -34,7 +34,7 @@ def run(scene, *sets, testing=False):
 run("strip_footing.prm")
 rows = [r for r in csv.DictReader(open(os.path.join(work, "steps.csv"))) if r["converged"] == "1"]
 settlement = [0.2 * float(r["load_factor"]) for r in rows]
-load = [-float(r["reaction_ymax_y"]) / 1e3 for r in rows]
+load = [-float(r["reaction_y+_y"]) / 1e3 for r in rows]
 prandtl = (2 + 3.141592653589793) * 2e4 / 2 ** 0.5 * 0.5 / 1e3
 plt.figure(figsize=(5, 3.5))
 plt.plot([0] + settlement, [0] + load, "o-", ms=3, label="IMPM (h = 0.25 m, GIMP 2x2)")

@@ -150,7 +150,7 @@ namespace impm
       add_stiffness(TrilinosWrappers::SparseMatrix &matrix) const override
       {
         const auto            &point_steps = this->system.point_steps;
-        constexpr unsigned int max_dofs = PointSupport<dim>::max_nodes * dim;
+        constexpr unsigned int max_dofs    = PointSupport<dim>::max_nodes * dim;
         std::vector<double>    local_matrix(max_dofs * max_dofs);
         std::array<double, max_dofs> row_values;
         for (const AssemblyGroup &group : this->system.assembly_groups)

@@ -63,8 +63,8 @@ namespace impm
     const QGauss<dim - 1> quadrature(2);
     const UpdateFlags     flags = update_gradients | update_normal_vectors |
                               update_JxW_values | update_quadrature_points;
-    FEFaceValues<dim> here(grid.get_mapping(), fe, quadrature, flags);
-    FEFaceValues<dim> there(grid.get_mapping(), fe, quadrature, flags);
+    FEFaceValues<dim>   here(grid.get_mapping(), fe, quadrature, flags);
+    FEFaceValues<dim>   there(grid.get_mapping(), fe, quadrature, flags);
     std::vector<double> normal_derivative(2 * n);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {

@@ -18,8 +18,7 @@ namespace impm
     for (unsigned int b = 0; b < names.size(); ++b)
       if (name == names[b])
         return static_cast<BasisType>(b);
-    throw std::invalid_argument("Parameter 'Material points/Basis' = '" +
-                                name +
+    throw std::invalid_argument("Parameter 'Material points/Basis' = '" + name +
                                 "' is not allowed: allowed: "
                                 "standard MPM|GIMP.");
   }

@@ -66,8 +66,9 @@ namespace impm
   {
     name = "Body " + std::to_string(number);
     prm.enter_subsection(name);
-    shape = static_cast<Shape>(Parameters::selection_index(
-      shape_names, name + "/Shape", prm.get("Shape")));
+    shape = static_cast<Shape>(Parameters::selection_index(shape_names,
+                                                           name + "/Shape",
+                                                           prm.get("Shape")));
     if ((shape == Shape::disc || shape == Shape::polygon) && dim != 2)
       Parameters::bad_value(name + "/Shape",
                             prm.get("Shape"),

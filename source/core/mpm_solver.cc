@@ -96,11 +96,10 @@ namespace impm
 
     pcout << "Scene '" << parameters.scene.name << "' (" << dim << "D) on "
           << Utilities::MPI::n_mpi_processes(communicator) << " process(es)\n"
-          << "  grid: "
-          << grid.get_triangulation().n_global_active_cells() << " cells, "
-          << grid.get_dof_handler().n_dofs() << " DoFs\n"
-          << "  material points: " << material_points.n_global_points()
-          << " (" << basis_name(parameters.material_points.basis) << ")\n"
+          << "  grid: " << grid.get_triangulation().n_global_active_cells()
+          << " cells, " << grid.get_dof_handler().n_dofs() << " DoFs\n"
+          << "  material points: " << material_points.n_global_points() << " ("
+          << basis_name(parameters.material_points.basis) << ")\n"
           << "  bodies:\n";
     for (const auto &body : parameters.bodies)
       pcout << "    " << body.description() << '\n';

@@ -337,10 +337,8 @@ namespace impm
       n_load_steps            = prm.get_integer("Load steps");
       tolerance               = prm.get_double("Tolerance");
       max_iterations          = prm.get_integer("Maximum iterations");
-      linear_solver           = static_cast<LinearSolverType>(
-        selection_index(linear_solver_names,
-                        "Solver/Linear solver",
-                        prm.get("Linear solver")));
+      linear_solver           = static_cast<LinearSolverType>(selection_index(
+        linear_solver_names, "Solver/Linear solver", prm.get("Linear solver")));
       linear_tolerance        = prm.get_double("Linear tolerance");
       step_control            = prm.get_bool("Step control");
       minimum_step            = prm.get_double("Minimum load step");
@@ -471,10 +469,24 @@ namespace impm
       prm.declare_entry("Significant digits",
                         "6",
                         Patterns::Integer(3, 17),
-                        "Significant digits of the printed points' position, "
-                        "displacement and stresses: few enough for the test "
-                        "suite to ignore round-off, up to 17 to compare two "
-                        "runs to full precision.");
+                        "Digits of the printed points: significant digits of "
+                        "the position, decimals of the scaled displacement "
+                        "and stresses; few enough for the test suite to "
+                        "ignore round-off, up to 17 to compare two runs to "
+                        "full precision.");
+      prm.declare_entry("Reference length",
+                        "1",
+                        Patterns::Double(1e-300),
+                        "Length L (m) the test summary divides lengths and "
+                        "displacements by, e.g. the cell size: the printed "
+                        "values are then checked to 1e-6 of L.");
+      prm.declare_entry("Reference stress",
+                        "1",
+                        Patterns::Double(1e-300),
+                        "Stress S (Pa) the test summary divides stresses by "
+                        "(reactions by S L^(dim-1)), e.g. rho g l0 of a "
+                        "column or a yield stress: the printed values are "
+                        "then checked to 1e-6 of S.");
       prm.declare_entry("Reference extent",
                         "",
                         Patterns::List(Patterns::Double(), 0, 3),
@@ -508,6 +520,8 @@ namespace impm
       reference_extent =
         get_optional_vector(prm, "Testing", "Reference extent", dimension);
       reference_tolerance = prm.get_double("Reference tolerance");
+      reference_length    = prm.get_double("Reference length");
+      reference_stress    = prm.get_double("Reference stress");
       probes              = get_point_list(prm, "Testing", "Probes", dimension);
       prm.leave_subsection();
     }

@@ -16,7 +16,7 @@ namespace impm
 {
   template <int dim>
   BackgroundGrid<dim>::BackgroundGrid(const Parameters::Grid<dim> &parameters,
-                                      const MPI_Comm communicator)
+                                      const MPI_Comm               communicator)
     : parameters(parameters)
     , communicator(communicator)
     , triangulation(communicator)
@@ -117,7 +117,7 @@ namespace impm
           {
             if (!cell->at_boundary(f))
               continue;
-            const unsigned int  face = cell->face(f)->boundary_id();
+            const unsigned int  face      = cell->face(f)->boundary_id();
             const FaceCondition condition = parameters.face_conditions[face];
             if (condition == FaceCondition::none)
               continue;
@@ -196,9 +196,7 @@ namespace impm
     for (const auto &[i, column] : reaction_dofs)
       reactions.by_column[column] +=
         internal_force.local_element(i) - external_force.local_element(i);
-    Utilities::MPI::sum(reactions.by_column,
-                        communicator,
-                        reactions.by_column);
+    Utilities::MPI::sum(reactions.by_column, communicator, reactions.by_column);
 
     // Global balance: the reactions carry the whole external load.
     std::vector<double> total(dim, 0.);

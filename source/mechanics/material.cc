@@ -1,10 +1,9 @@
 #include <impm/mechanics/material.h>
 
-#include <stdexcept>
-
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 namespace impm
 {

@@ -37,7 +37,7 @@ namespace impm
   void
   MaterialPoints<dim>::seed(const BackgroundGrid<dim> &background)
   {
-    using P = PointProperties<dim>;
+    using P            = PointProperties<dim>;
     double cell_volume = 1.;
     for (unsigned int d = 0; d < dim; ++d)
       cell_volume *= grid.cell_size[d];
@@ -156,8 +156,8 @@ namespace impm
   MaterialPoints<dim>::cell_fill_fractions(
     const BackgroundGrid<dim> &background) const
   {
-    std::vector<double> fill(
-      background.get_triangulation().n_active_cells(), 0.);
+    std::vector<double> fill(background.get_triangulation().n_active_cells(),
+                             0.);
     for (const auto &cell :
          background.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -176,8 +176,8 @@ namespace impm
   void
   MaterialPoints<dim>::advance(const std::vector<PointStep<dim>> &point_steps,
                                const NodalVector                 &increment,
-                               const bool                         update_domains,
-                               const unsigned int                 load_step)
+                               const bool         update_domains,
+                               const unsigned int load_step)
   {
     std::string  left_grid;
     unsigned int p = 0;
@@ -220,10 +220,10 @@ namespace impm
                   stretch += std::sqrt(eigen[a].first) * eigen[a].second[d] *
                              eigen[a].second[d];
                 // At most h/2: a domain then spans at most three nodes.
-                state.set_domain_half_length(
-                  d,
-                  std::min(initial_half_length[d] * stretch,
-                           0.5 * grid.cell_size[d]));
+                state.set_domain_half_length(d,
+                                             std::min(initial_half_length[d] *
+                                                        stretch,
+                                                      0.5 * grid.cell_size[d]));
               }
           }
 
@@ -262,7 +262,7 @@ namespace impm
   PointMeasures<dim>
   MaterialPoints<dim>::measure() const
   {
-    double mass = 0., tension = -std::numeric_limits<double>::max();
+    double     mass = 0., tension = -std::numeric_limits<double>::max();
     Point<dim> initial_min, initial_max, current_min, current_max;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -273,8 +273,7 @@ namespace impm
       {
         const PointState<dim> state(point.get_properties());
         mass += state.mass();
-        tension =
-          std::max(tension, state.cauchy_stress()[dim - 1][dim - 1]);
+        tension = std::max(tension, state.cauchy_stress()[dim - 1][dim - 1]);
         const Point<dim> X = state.initial_position();
         for (unsigned int d = 0; d < dim; ++d)
           {

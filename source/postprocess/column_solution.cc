@@ -13,8 +13,7 @@ namespace impm
     {
       const auto &body = context.parameters.bodies[0];
       return {body.upper_corner[dim - 1] - body.lower_corner[dim - 1],
-              body.density *
-                std::abs(context.parameters.gravity[dim - 1])};
+              body.density * std::abs(context.parameters.gravity[dim - 1])};
     }
 
     /**
@@ -80,7 +79,8 @@ namespace impm
                                                const double depth,
                                                const double initial_volume) {
                             const double exact = -load_factor * weight * depth;
-                            local[0] += std::abs(sigma - exact) * initial_volume;
+                            local[0] +=
+                              std::abs(sigma - exact) * initial_volume;
                             local[1] += initial_volume;
                           });
     double global[2];
@@ -113,9 +113,8 @@ namespace impm
 
   template class ColumnSolution<2>;
   template class ColumnSolution<3>;
-  IMPM_REGISTER_POSTPROCESSOR(
-  ColumnSolution,
-  "column solution",
-  context.parameters.output.analytical_solution ==
-    impm::Parameters::AnalyticalSolution::column)
+  IMPM_REGISTER_POSTPROCESSOR(ColumnSolution,
+                              "column solution",
+                              context.parameters.output.analytical_solution ==
+                                impm::Parameters::AnalyticalSolution::column)
 } // namespace impm

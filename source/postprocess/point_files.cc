@@ -28,9 +28,8 @@ namespace impm
       {
         const auto &fields = context.parameters.output.fields;
         const auto &layout = context.material_points.layout();
-        plastic_multiplier =
-          fields.plastic_multiplier &&
-          layout.plastic_multiplier != PointLayout::absent;
+        plastic_multiplier = fields.plastic_multiplier &&
+                             layout.plastic_multiplier != PointLayout::absent;
         body = fields.body && layout.body != PointLayout::absent;
         for (unsigned int d = 0; d < dim && fields.displacement; ++d)
           add("displacement", true);
@@ -85,18 +84,18 @@ namespace impm
             const unsigned int     load_step)
       {
         TimerOutput::Scope scope(context.timer, "output");
-        const auto        &fields    = context.parameters.output.fields;
-        const auto        &points    = context.material_points;
-        const double       this_rank = Utilities::MPI::this_mpi_process(
-          context.communicator);
+        const auto        &fields = context.parameters.output.fields;
+        const auto        &points = context.material_points;
+        const double       this_rank =
+          Utilities::MPI::this_mpi_process(context.communicator);
         output.begin(points.n_local_points(), names, is_vector);
         std::vector<double> values(names.size());
         unsigned int        p = 0;
         for (const auto &point : points.particles())
           {
-            const PointState<dim> state(point.get_properties());
-            const Point<dim>      X = state.initial_position();
-            const double          J = state.jacobian();
+            const PointState<dim>       state(point.get_properties());
+            const Point<dim>            X     = state.initial_position();
+            const double                J     = state.jacobian();
             const SymmetricTensor<2, 3> sigma = state.kirchhoff_stress() / J;
             unsigned int                c     = 0;
             for (unsigned int d = 0; d < dim && fields.displacement; ++d)
@@ -133,6 +132,6 @@ namespace impm
     };
   } // namespace
   IMPM_REGISTER_POSTPROCESSOR(PointFiles,
-                            "point files",
-                            context.parameters.output.interval > 0)
+                              "point files",
+                              context.parameters.output.interval > 0)
 } // namespace impm

@@ -38,7 +38,8 @@ namespace impm
     total_newton_iterations += record.newton.n_iterations();
     residual_evaluations += record.newton.residuals.size();
     system_dofs_last_step = record.system_dofs;
-    worst_condition = std::max(worst_condition, record.newton.condition_estimate);
+    worst_condition =
+      std::max(worst_condition, record.newton.condition_estimate);
     if (!record.converged())
       {
         ++n_cuts;
@@ -82,7 +83,8 @@ namespace impm
 
   template <int dim>
   void
-  Postprocessor<dim>::finish(const RunContext<dim> &, const RunStatistics<dim> &)
+  Postprocessor<dim>::finish(const RunContext<dim> &,
+                             const RunStatistics<dim> &)
   {}
 
 

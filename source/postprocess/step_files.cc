@@ -174,6 +174,6 @@ namespace impm
   IMPM_REGISTER_POSTPROCESSOR(StepsFile, "steps file", true)
   IMPM_REGISTER_POSTPROCESSOR(NewtonFile, "newton file", true)
   IMPM_REGISTER_POSTPROCESSOR(ProgressLog,
-                            "progress log",
-                            !context.parameters.testing.enabled)
+                              "progress log",
+                              !context.parameters.testing.enabled)
 } // namespace impm

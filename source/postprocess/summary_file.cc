@@ -105,8 +105,7 @@ namespace impm
              << "  \"residual_evaluations\": "
              << statistics.residual_evaluations << ",\n"
              << "  \"microseconds_per_point_evaluation\": "
-             << 1e6 *
-                  (phase_time("stress update") + phase_time("assembly")) /
+             << 1e6 * (phase_time("stress update") + phase_time("assembly")) /
                   (double(n_points) * statistics.residual_evaluations)
              << ",\n"
              << "  \"linear_solve_share\": "

@@ -52,10 +52,10 @@ namespace impm
             x            = y;
             x /= inverse_norm;
           }
-        const double condition = matrix.frobenius_norm() * inverse_norm;
-        last_condition_estimate =
-          std::isfinite(condition) ? condition :
-                                     std::numeric_limits<double>::infinity();
+        const double condition  = matrix.frobenius_norm() * inverse_norm;
+        last_condition_estimate = std::isfinite(condition) ?
+                                    condition :
+                                    std::numeric_limits<double>::infinity();
       }
 
     private:

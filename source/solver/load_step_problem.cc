@@ -102,8 +102,8 @@ namespace impm
   double
   LoadStepProblem<dim>::max_point_increment() const
   {
-    const auto  &cell_size = grid.cartesian().cell_size;
-    double       largest   = 0.;
+    const auto &cell_size = grid.cartesian().cell_size;
+    double      largest   = 0.;
     for (const PointStep<dim> &step : system.point_steps)
       {
         Tensor<1, dim> displacement;
@@ -115,7 +115,8 @@ namespace impm
         for (unsigned int d = 0; d < dim; ++d)
           largest = std::max(largest, std::abs(displacement[d]) / cell_size[d]);
       }
-    return Utilities::MPI::max(largest, grid.get_triangulation().get_communicator());
+    return Utilities::MPI::max(largest,
+                               grid.get_triangulation().get_communicator());
   }
 
 

@@ -58,7 +58,8 @@ namespace impm
         else
           {
             problem.assemble_matrix();
-            const bool   estimate = parameters.estimate_condition && iteration == 0;
+            const bool estimate =
+              parameters.estimate_condition && iteration == 0;
             const double condition = problem.solve_and_update(estimate);
             if (estimate)
               record.condition_estimate = condition;

@@ -43,9 +43,9 @@ namespace impm
      * @param communicator The processes of the run.
      */
     static std::unique_ptr<Assembler<dim>>
-    create(const Parameters::Formulation                         formulation,
-           const MaterialPoints<dim>                            &material_points,
-           LoadStepSystem<dim>                                  &system,
+    create(const Parameters::Formulation formulation,
+           const MaterialPoints<dim>    &material_points,
+           LoadStepSystem<dim>          &system,
            const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
            const MPI_Comm                                        communicator);
 
@@ -86,10 +86,11 @@ namespace impm
 
   protected:
     /** @brief Constructor (see create()). */
-    Assembler(const MaterialPoints<dim>                            &material_points,
-              LoadStepSystem<dim>                                  &system,
-              const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
-              const MPI_Comm communicator);
+    Assembler(
+      const MaterialPoints<dim>                            &material_points,
+      LoadStepSystem<dim>                                  &system,
+      const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
+      const MPI_Comm                                        communicator);
 
     /** The points. */
     const MaterialPoints<dim> &material_points;

@@ -89,16 +89,16 @@ namespace impm
     ConditionalOStream                                   pcout;
     TimerOutput                                          timer;
 
-    BackgroundGrid<dim>                           grid;
-    MaterialPoints<dim>                           material_points;
-    std::unique_ptr<GhostStabilisation<dim>>      ghost_stabilisation;
-    LoadStepSystem<dim>                           system;
-    std::unique_ptr<Assembler<dim>>               assembler;
-    std::unique_ptr<LinearSolver>                 linear_solver;
-    LoadStepProblem<dim>                          problem;
-    NewtonSolver                                  newton_solver;
-    std::vector<std::string>                      effect_descriptions;
-    std::unique_ptr<PostprocessorManager<dim>>    postprocessors;
+    BackgroundGrid<dim>                        grid;
+    MaterialPoints<dim>                        material_points;
+    std::unique_ptr<GhostStabilisation<dim>>   ghost_stabilisation;
+    LoadStepSystem<dim>                        system;
+    std::unique_ptr<Assembler<dim>>            assembler;
+    std::unique_ptr<LinearSolver>              linear_solver;
+    LoadStepProblem<dim>                       problem;
+    NewtonSolver                               newton_solver;
+    std::vector<std::string>                   effect_descriptions;
+    std::unique_ptr<PostprocessorManager<dim>> postprocessors;
   };
 } // namespace impm
 

@@ -345,6 +345,10 @@ namespace impm
       std::vector<double> reference_extent;
       /** Allowed distance from the reference extent. */
       double reference_tolerance;
+      /** Length L the test summary divides lengths by (m). */
+      double reference_length;
+      /** Stress S the test summary divides stresses by (Pa). */
+      double reference_stress;
       /** Points nearest to these initial positions are printed too. */
       std::vector<std::vector<double>> probes;
 

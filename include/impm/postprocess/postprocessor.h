@@ -173,7 +173,8 @@ namespace impm
 
     /** @brief Called once after the full load is reached. */
     virtual void
-    finish(const RunContext<dim> &context, const RunStatistics<dim> &statistics);
+    finish(const RunContext<dim>    &context,
+           const RunStatistics<dim> &statistics);
   };
 
   /** @brief The registry of postprocessors (see PluginList). */
@@ -216,26 +217,25 @@ namespace impm
  * RunContext) as postprocessor @p NAME, created when @p WANTED (an
  * expression of `const RunContext<dim> &context`) holds.
  */
-#define IMPM_REGISTER_POSTPROCESSOR(CLASS, NAME, WANTED)                   \
-  namespace                                                                \
-  {                                                                        \
-    template <int dim>                                                     \
-    bool                                                                   \
-    register_##CLASS()                                                     \
-    {                                                                      \
-      return impm::PostprocessorList<dim>::register_plugin(                \
-        {NAME,                                                             \
-         NAME,                                                             \
-         {},                                                               \
-         [](const impm::RunContext<dim> &context)                          \
-           -> std::unique_ptr<impm::Postprocessor<dim>> {                  \
-           if (!(WANTED))                                                  \
-             return nullptr;                                               \
-           return std::make_unique<CLASS<dim>>(context);                   \
-         }});                                                              \
-    }                                                                      \
-    const bool CLASS##_registered =                                        \
-      register_##CLASS<2>() && register_##CLASS<3>();                      \
+#define IMPM_REGISTER_POSTPROCESSOR(CLASS, NAME, WANTED)    \
+  namespace                                                 \
+  {                                                         \
+    template <int dim>                                      \
+    bool register_##CLASS()                                 \
+    {                                                       \
+      return impm::PostprocessorList<dim>::register_plugin( \
+        {NAME,                                              \
+         NAME,                                              \
+         {},                                                \
+         [](const impm::RunContext<dim> &context)           \
+           -> std::unique_ptr<impm::Postprocessor<dim>> {   \
+           if (!(WANTED))                                   \
+             return nullptr;                                \
+           return std::make_unique<CLASS<dim>>(context);    \
+         }});                                               \
+    }                                                       \
+    const bool CLASS##_registered =                         \
+      register_##CLASS<2>() && register_##CLASS<3>();       \
   }
 
 #endif
