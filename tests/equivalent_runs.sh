@@ -11,15 +11,8 @@
 #     coordinate and the y faces' lateral reactions).
 # Values are compared with numdiff at the suite's tolerances.
 # Usage: equivalent_runs.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
-set -u
-impm=$1
 tests=$2
-launcher=()
-[ $# -ge 4 ] && launcher=("$3" -np "$4")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-fail() { echo "FAILED: $*"; exit 1; }
+source "$(dirname "$0")/script_helpers.sh" "$@"
 compare() {
   numdiff -q -a 1e-6 -r 1e-8 -s ' \t\n=,:;<>[](){}^' "$1" "$2" > /dev/null ||
     { diff "$1" "$2"; fail "$3"; }

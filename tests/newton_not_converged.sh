@@ -4,13 +4,8 @@
 # residuals of the attempt; then checks the test's premise, that the same scene
 # converges when four iterations are allowed.
 # Usage: newton_not_converged.sh IMPM SCENE
-set -u
-impm=$1
 scene=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-fail() { echo "FAILED: $*"; cat log.txt; exit 1; }
+source "$(dirname "$0")/script_helpers.sh" "$@"
 
 "$impm" "$scene" > log.txt 2>&1 && fail "the run did not stop"
 grep -qF "Error: Load step 1 (from load factor 0 to 1): Newton iteration limit. Relative residuals:" log.txt ||

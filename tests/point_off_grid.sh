@@ -2,15 +2,8 @@
 # Runs point_off_grid.prm, which must fail, and checks the error message and
 # that the output written before the failure is complete.
 # Usage: point_off_grid.sh IMPM SCENE [MPIEXEC N]
-set -u
-impm=$1
 scene=$2
-launcher=()
-[ $# -ge 4 ] && launcher=("$3" -np "$4")
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-fail() { echo "FAILED: $*"; cat log.txt; exit 1; }
+source "$(dirname "$0")/script_helpers.sh" "$@"
 
 "${launcher[@]}" "$impm" "$scene" > log.txt 2>&1 && fail "the run did not stop"
 grep -q "Load step 3: material point [0-9]* (initially at 0.[27]5 0.75) moved to" log.txt ||

@@ -127,6 +127,22 @@ namespace
                             max_abs(be_new - R * be_old * transpose(R)),
                             1e-12);
   }
+  /** The update of @p material from the stress-free state under the
+   *  uniaxial stretch exp(@p e) along x, with its title and state printed. */
+  ConstitutiveUpdate
+  uniaxial_update(const HenckyVonMises &material,
+                  const std::string    &title,
+                  const double          e)
+  {
+    std::cout << title << ", e = " << e << std::endl;
+    ConstitutiveUpdate result;
+    material.update(diagonal(std::exp(e), 1., 1.),
+                    unit_symmetric_tensor<3>(),
+                    result);
+    std::cout << "  state: " << (result.plastic ? "plastic" : "elastic")
+              << std::endl;
+    return result;
+  }
 } // namespace
 
 
@@ -146,13 +162,10 @@ main()
 
   // 1. Elastic uniaxial strain.
   {
-    const double e = -0.01;
-    std::cout << "Elastic uniaxial strain, e = " << e << std::endl;
-    ConstitutiveUpdate result;
-    material.update(diagonal(std::exp(e), 1., 1.), I, result);
+    const double             e = -0.01;
+    const ConstitutiveUpdate result =
+      uniaxial_update(material, "Elastic uniaxial strain", e);
     const SymmetricTensor<2, 3> &tau = result.kirchhoff_stress;
-    std::cout << "  state: " << (result.plastic ? "plastic" : "elastic")
-              << std::endl;
     compare("tau_11", tau[0][0], -13461.5384615);
     compare("tau_22", tau[1][1], -5769.23076923);
     compare("tau_33", tau[2][2], -5769.23076923);
@@ -173,13 +186,10 @@ main()
 
   // 2. Plastic uniaxial strain.
   {
-    const double e = -0.05;
-    std::cout << "Plastic uniaxial strain, e = " << e << std::endl;
-    ConstitutiveUpdate result;
-    material.update(diagonal(std::exp(e), 1., 1.), I, result);
+    const double             e = -0.05;
+    const ConstitutiveUpdate result =
+      uniaxial_update(material, "Plastic uniaxial strain", e);
     const SymmetricTensor<2, 3> &tau = result.kirchhoff_stress;
-    std::cout << "  state: " << (result.plastic ? "plastic" : "elastic")
-              << std::endl;
 
     // The trial state, from the formulas of the comment at the top.
     SymmetricTensor<2, 3> eps_trial;

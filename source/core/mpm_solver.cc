@@ -33,7 +33,7 @@ namespace impm
                                        system,
                                        this->force_effects,
                                        communicator))
-    , linear_solver(LinearSolver::create(parameters.solver, communicator))
+    , linear_solver(LinearSolver::create(parameters.solver))
     , problem(grid,
               system,
               *assembler,

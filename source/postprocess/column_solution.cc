@@ -42,12 +42,6 @@ namespace impm
 
 
   template <int dim>
-  ColumnSolution<dim>::ColumnSolution(const RunContext<dim> &)
-  {}
-
-
-
-  template <int dim>
   std::vector<std::string>
   ColumnSolution<dim>::step_measure_columns() const
   {

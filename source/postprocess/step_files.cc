@@ -23,17 +23,17 @@ namespace impm
 
 
     /**
-     * @brief `steps.csv`: one row per load-step attempt with its load,
-     * Newton iterations, final residual, system size, the step measures, the
-     * reactions per face and component, and the time of each phase. A cut
-     * attempt leaves its measures and reactions empty.
+     * @brief A CSV file of the run in the output directory, written by rank
+     * 0: its header at the start, then its rows after every attempt, flushed
+     * whole.
      */
     template <int dim>
-    class StepsFile : public Postprocessor<dim>
+    class CsvFile : public Postprocessor<dim>
     {
     public:
-      /** @brief Nothing is opened before start(). */
-      explicit StepsFile(const RunContext<dim> &)
+      /** @brief The file @p file_name in the output directory. */
+      explicit CsvFile(const std::string &file_name)
+        : file_name(file_name)
       {}
 
       void
@@ -41,8 +41,59 @@ namespace impm
       {
         if (!is_root(context.communicator))
           return;
-        file.open(context.parameters.scene.output_directory + "/steps.csv");
-        auto &out = file.stream();
+        file.open(context.parameters.scene.output_directory + '/' + file_name);
+        write_header(context, file.stream());
+        file.stream() << '\n';
+        file.flush();
+      }
+
+      void
+      after_step(const RunContext<dim> &context,
+                 const StepRecord      &record,
+                 const RunStatistics<dim> &) override
+      {
+        if (!is_root(context.communicator))
+          return;
+        write_rows(context, record, file.stream());
+        file.flush();
+      }
+
+    protected:
+      /** Write the header (without its line end). */
+      virtual void
+      write_header(const RunContext<dim> &context, std::ostream &out) = 0;
+
+      /** Write the rows of the attempt @p record, each ended. */
+      virtual void
+      write_rows(const RunContext<dim> &context,
+                 const StepRecord      &record,
+                 std::ostream          &out) = 0;
+
+    private:
+      const std::string file_name;
+      LogFile           file;
+    };
+
+
+
+    /**
+     * @brief `steps.csv`: one row per load-step attempt with its load,
+     * Newton iterations, final residual, system size, the step measures, the
+     * reactions per face and component, and the time of each phase. A cut
+     * attempt leaves its measures and reactions empty.
+     */
+    template <int dim>
+    class StepsFile : public CsvFile<dim>
+    {
+    public:
+      StepsFile()
+        : CsvFile<dim>("steps.csv")
+      {}
+
+    protected:
+      void
+      write_header(const RunContext<dim> &context, std::ostream &out) override
+      {
         out << "step,load_factor,load_increment,converged,"
                "newton_iterations,relative_residual,system_dofs";
         for (const std::string &column : context.step_measure_columns)
@@ -55,20 +106,15 @@ namespace impm
             std::replace(phase.begin(), phase.end(), ' ', '_');
             out << ",time_" << phase;
           }
-        out << '\n';
-        file.flush();
       }
 
       void
-      after_step(const RunContext<dim> &context,
+      write_rows(const RunContext<dim> &context,
                  const StepRecord      &record,
-                 const RunStatistics<dim> &) override
+                 std::ostream          &out) override
       {
         const auto times =
           context.timer.get_summary_data(TimerOutput::total_wall_time);
-        if (!is_root(context.communicator))
-          return;
-        auto &out = file.stream();
         out << record.step_number << ',' << std::setprecision(10)
             << record.target << ',' << record.target - record.start << ','
             << (record.converged() ? 1 : 0) << ','
@@ -80,12 +126,11 @@ namespace impm
             if (record.converged())
               out << record.measures[m].value;
           }
-        for (unsigned int r = 0; r < context.grid.reaction_columns().size();
-             ++r)
+        for (const unsigned int c : context.grid.reaction_columns())
           {
             out << ',';
             if (record.converged())
-              out << record.reactions[context.grid.reaction_columns()[r]];
+              out << record.reactions[c];
           }
         for (const auto &phase : solver_phases)
           {
@@ -94,11 +139,9 @@ namespace impm
             previous_times[phase] = now;
           }
         out << '\n';
-        file.flush();
       }
 
     private:
-      LogFile                       file;
       std::map<std::string, double> previous_times;
     };
 
@@ -109,39 +152,29 @@ namespace impm
      * every attempt.
      */
     template <int dim>
-    class NewtonFile : public Postprocessor<dim>
+    class NewtonFile : public CsvFile<dim>
     {
     public:
-      /** @brief Nothing is opened before start(). */
-      explicit NewtonFile(const RunContext<dim> &)
+      NewtonFile()
+        : CsvFile<dim>("newton.csv")
       {}
 
+    protected:
       void
-      start(const RunContext<dim> &context) override
+      write_header(const RunContext<dim> &, std::ostream &out) override
       {
-        if (!is_root(context.communicator))
-          return;
-        file.open(context.parameters.scene.output_directory + "/newton.csv");
-        file.stream() << "step,iteration,relative_residual\n"
-                      << std::setprecision(6);
-        file.flush();
+        out << "step,iteration,relative_residual";
       }
 
       void
-      after_step(const RunContext<dim> &context,
-                 const StepRecord      &record,
-                 const RunStatistics<dim> &) override
+      write_rows(const RunContext<dim> &,
+                 const StepRecord &record,
+                 std::ostream     &out) override
       {
-        if (!is_root(context.communicator))
-          return;
         for (unsigned int k = 0; k < record.newton.residuals.size(); ++k)
-          file.stream() << record.step_number << ',' << k << ','
-                        << record.newton.residuals[k] << '\n';
-        file.flush();
+          out << record.step_number << ',' << k << ',' << std::setprecision(6)
+              << record.newton.residuals[k] << '\n';
       }
-
-    private:
-      LogFile file;
     };
 
 
@@ -154,10 +187,6 @@ namespace impm
     class ProgressLog : public Postprocessor<dim>
     {
     public:
-      /** @brief Nothing to set up. */
-      explicit ProgressLog(const RunContext<dim> &)
-      {}
-
       void
       after_step(const RunContext<dim> &context,
                  const StepRecord      &record,

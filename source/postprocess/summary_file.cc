@@ -30,10 +30,6 @@ namespace impm
     class SummaryFile : public Postprocessor<dim>
     {
     public:
-      /** @brief Nothing to set up. */
-      explicit SummaryFile(const RunContext<dim> &)
-      {}
-
       void
       finish(const RunContext<dim>    &context,
              const RunStatistics<dim> &statistics) override

@@ -27,10 +27,6 @@ namespace impm
     class TestSummary : public Postprocessor<dim>
     {
     public:
-      /** @brief Nothing to set up. */
-      explicit TestSummary(const RunContext<dim> &)
-      {}
-
       void
       after_step(const RunContext<dim> &,
                  const StepRecord &record,

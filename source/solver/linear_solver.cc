@@ -18,11 +18,6 @@ namespace impm
     class DirectSolver : public LinearSolver
     {
     public:
-      /** @brief A direct solver on @p communicator. */
-      explicit DirectSolver(const MPI_Comm communicator)
-        : communicator(communicator)
-      {}
-
       void
       solve(const TrilinosWrappers::SparseMatrix &matrix,
             TrilinosWrappers::MPI::Vector        &solution,
@@ -41,8 +36,8 @@ namespace impm
         // |A|_F times a lower bound of |A^-1|_2 from three steps of inverse
         // iteration with the factorisation already made.
         TrilinosWrappers::MPI::Vector x(rhs.locally_owned_elements(),
-                                        communicator),
-          y(rhs.locally_owned_elements(), communicator);
+                                        rhs.get_mpi_communicator()),
+          y(x);
         x                   = 1. / std::sqrt(double(x.size()));
         double inverse_norm = 0.;
         for (unsigned int k = 0; k < 3; ++k)
@@ -57,9 +52,6 @@ namespace impm
                                     condition :
                                     std::numeric_limits<double>::infinity();
       }
-
-    private:
-      const MPI_Comm communicator;
     };
 
 
@@ -102,13 +94,12 @@ namespace impm
 
 
   std::unique_ptr<LinearSolver>
-  LinearSolver::create(const Parameters::Solver &parameters,
-                       const MPI_Comm            communicator)
+  LinearSolver::create(const Parameters::Solver &parameters)
   {
     switch (parameters.linear_solver)
       {
         case Parameters::LinearSolverType::direct:
-          return std::make_unique<DirectSolver>(communicator);
+          return std::make_unique<DirectSolver>();
         case Parameters::LinearSolverType::gmres_amg:
           return std::make_unique<GmresAmgSolver>(parameters.linear_tolerance);
       }

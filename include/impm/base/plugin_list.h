@@ -104,4 +104,23 @@ namespace impm
   };
 } // namespace impm
 
+/**
+ * Register the plugin @p CLASS (a template over dim) in the registry
+ * LIST<dim> (a PluginList) as @p NAME, for dim = 2 and 3, when the library
+ * is loaded. @p DECLARE and @p CREATE are the entry's parameter declaration
+ * and factory, expressions that may use dim (a lambda in parentheses).
+ */
+#define IMPM_REGISTER_PLUGIN_IN_BOTH_DIMENSIONS(                        \
+  LIST, CLASS, NAME, DECLARE, CREATE)                                   \
+  namespace                                                             \
+  {                                                                     \
+    template <int dim>                                                  \
+    bool register_##CLASS()                                             \
+    {                                                                   \
+      return LIST<dim>::register_plugin({NAME, NAME, DECLARE, CREATE}); \
+    }                                                                   \
+    const bool CLASS##_registered =                                     \
+      register_##CLASS<2>() && register_##CLASS<3>();                   \
+  }
+
 #endif

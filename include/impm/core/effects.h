@@ -125,26 +125,18 @@ namespace impm
  * Register force effect CLASS (a class template over dim) under NAME, enabled
  * by default or not: the one line an effect needs besides its class.
  */
-#define IMPM_REGISTER_FORCE_EFFECT(CLASS, NAME, ENABLED)        \
-  namespace                                                     \
-  {                                                             \
-    template <int dim>                                          \
-    bool register_##CLASS()                                     \
-    {                                                           \
-      return impm::ForceEffectList<dim>::register_plugin(       \
-        {NAME,                                                  \
-         NAME,                                                  \
-         [](dealii::ParameterHandler &prm) {                    \
-           impm::EffectRegistry::declare_enabled(prm, ENABLED); \
-           CLASS<dim>::declare_parameters(prm);                 \
-         },                                                     \
-         [](dealii::ParameterHandler &prm)                      \
-           -> std::unique_ptr<impm::ForceEffect<dim>> {         \
-           return std::make_unique<CLASS<dim>>(prm);            \
-         }});                                                   \
-    }                                                           \
-    const bool CLASS##_registered =                             \
-      register_##CLASS<2>() && register_##CLASS<3>();           \
-  }
+#define IMPM_REGISTER_FORCE_EFFECT(CLASS, NAME, ENABLED)   \
+  IMPM_REGISTER_PLUGIN_IN_BOTH_DIMENSIONS(                 \
+    impm::ForceEffectList,                                 \
+    CLASS,                                                 \
+    NAME,                                                  \
+    ([](dealii::ParameterHandler &prm) {                   \
+      impm::EffectRegistry::declare_enabled(prm, ENABLED); \
+      CLASS<dim>::declare_parameters(prm);                 \
+    }),                                                    \
+    ([](dealii::ParameterHandler &prm)                     \
+       -> std::unique_ptr<impm::ForceEffect<dim>> {        \
+      return std::make_unique<CLASS<dim>>(prm);            \
+    }))
 
 #endif

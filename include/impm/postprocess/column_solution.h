@@ -19,9 +19,6 @@ namespace impm
   class ColumnSolution : public Postprocessor<dim>
   {
   public:
-    /** @brief The column of @p context's first body. */
-    explicit ColumnSolution(const RunContext<dim> &context);
-
     std::vector<std::string>
     step_measure_columns() const override;
 

@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace impm
@@ -213,29 +214,25 @@ namespace impm
 } // namespace impm
 
 /**
- * Register @p CLASS (a template over dim with a constructor taking a
- * RunContext) as postprocessor @p NAME, created when @p WANTED (an
+ * Register @p CLASS (a template over dim, constructed from a RunContext or
+ * by default) as postprocessor @p NAME, created when @p WANTED (an
  * expression of `const RunContext<dim> &context`) holds.
  */
-#define IMPM_REGISTER_POSTPROCESSOR(CLASS, NAME, WANTED)    \
-  namespace                                                 \
-  {                                                         \
-    template <int dim>                                      \
-    bool register_##CLASS()                                 \
-    {                                                       \
-      return impm::PostprocessorList<dim>::register_plugin( \
-        {NAME,                                              \
-         NAME,                                              \
-         {},                                                \
-         [](const impm::RunContext<dim> &context)           \
-           -> std::unique_ptr<impm::Postprocessor<dim>> {   \
-           if (!(WANTED))                                   \
-             return nullptr;                                \
-           return std::make_unique<CLASS<dim>>(context);    \
-         }});                                               \
-    }                                                       \
-    const bool CLASS##_registered =                         \
-      register_##CLASS<2>() && register_##CLASS<3>();       \
-  }
+#define IMPM_REGISTER_POSTPROCESSOR(CLASS, NAME, WANTED)                    \
+  IMPM_REGISTER_PLUGIN_IN_BOTH_DIMENSIONS(                                  \
+    impm::PostprocessorList,                                                \
+    CLASS,                                                                  \
+    NAME,                                                                   \
+    {},                                                                     \
+    ([](const impm::RunContext<dim> &context)                               \
+       -> std::unique_ptr<impm::Postprocessor<dim>> {                       \
+      if (!(WANTED))                                                        \
+        return nullptr;                                                     \
+      if constexpr (std::is_constructible_v<CLASS<dim>,                     \
+                                            const impm::RunContext<dim> &>) \
+        return std::make_unique<CLASS<dim>>(context);                       \
+      else                                                                  \
+        return std::make_unique<CLASS<dim>>();                              \
+    }))
 
 #endif

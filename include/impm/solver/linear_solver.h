@@ -28,10 +28,10 @@ namespace impm
     /**
      * @brief The solver the scene names.
      * @param parameters The scene's solver parameters (type, tolerance).
-     * @param communicator The processes that share the system.
+     * The processes are those of the system's vectors.
      */
     static std::unique_ptr<LinearSolver>
-    create(const Parameters::Solver &parameters, const MPI_Comm communicator);
+    create(const Parameters::Solver &parameters);
 
     virtual ~LinearSolver() = default;
 
