@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <impm/io/atomic_file.h>
 #include <impm/io/point_output.h>
 
 #include <cstdio>
@@ -69,16 +70,9 @@ namespace impm
     const std::string piece =
       stem + "." + Utilities::int_to_string(rank, 4) + ".vtu";
     if (!patches.empty())
-      {
-        {
-          std::ofstream out(directory + "/" + piece + ".tmp");
-          AssertThrow(out,
-                      ExcMessage("Cannot write " + directory + "/" + piece));
-          this->write_vtu(out);
-        }
-        std::rename((directory + "/" + piece + ".tmp").c_str(),
-                    (directory + "/" + piece).c_str());
-      }
+      write_file_atomically(directory + "/" + piece, [this](std::ostream &out) {
+        this->write_vtu(out);
+      });
     // All pieces exist before the records that name them.
     MPI_Barrier(communicator);
 
@@ -89,20 +83,16 @@ namespace impm
           if (counts[r] > 0)
             pieces.push_back(stem + "." + Utilities::int_to_string(r, 4) +
                              ".vtu");
-        {
-          std::ofstream out(directory + "/" + stem + ".pvtu.tmp");
-          this->write_pvtu_record(out, pieces);
-        }
-        std::rename((directory + "/" + stem + ".pvtu.tmp").c_str(),
-                    (directory + "/" + stem + ".pvtu").c_str());
+        write_file_atomically(directory + "/" + stem + ".pvtu",
+                              [&](std::ostream &out) {
+                                this->write_pvtu_record(out, pieces);
+                              });
 
         series.emplace_back(time, stem + ".pvtu");
-        {
-          std::ofstream out(directory + "/" + base_name + ".pvd.tmp");
-          DataOutBase::write_pvd_record(out, series);
-        }
-        std::rename((directory + "/" + base_name + ".pvd.tmp").c_str(),
-                    (directory + "/" + base_name + ".pvd").c_str());
+        write_file_atomically(directory + "/" + base_name + ".pvd",
+                              [&](std::ostream &out) {
+                                DataOutBase::write_pvd_record(out, series);
+                              });
       }
   }
 
