@@ -8,7 +8,8 @@
 #     column_3d_gimp_plastic_8.prm and column_gimp_plastic_8.prm print the
 #     same step lines, Newton counts, vertical extent, stresses and reactions
 #     (the vertical axis is z in 3D and y in 2D; the 3D printout has an extra
-#     coordinate and the y faces' lateral reactions).
+#     coordinate and the y faces' lateral reactions);
+#  3. the MUMPS direct solver gives the same iterates as KLU.
 # Values are compared with numdiff at the suite's tolerances.
 # Usage: equivalent_runs.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
 tests=$2
@@ -42,4 +43,7 @@ sed -e '/^extent in x/d' -e '/^scales/d' -e '/^total mass/d' \
 [ "$(grep -c '^step ' column_2d.txt)" -eq 50 ] || fail "the plane-strain column did not print its 50 steps"
 grep -q "face V-, component V" column_2d.txt || fail "no base reaction printed"
 compare column_3d.txt column_2d.txt "the 3D column differs from the plane-strain one"
-echo "equivalent_runs: both pairs of runs agree"
+"${launcher[@]}" "$impm" "$tests/column_gimp_plastic_8.prm" \
+  --set "Solver/Linear solver=MUMPS" > column_mumps.txt 2> /dev/null || fail "the MUMPS run failed"
+compare column_mumps.txt column_gimp_plastic_8.txt "MUMPS differs from KLU"
+echo "equivalent_runs: the three pairs of runs agree"

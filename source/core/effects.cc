@@ -331,13 +331,21 @@ namespace impm
             if (inside)
               areas[point.id] = area;
           }
-        n_points = Utilities::MPI::sum(areas.size(), communicator);
+        // Points move between processes during the run: every process
+        // keeps every loaded point.
+        const auto gathered = Utilities::MPI::all_gather(
+          communicator,
+          std::vector<std::pair<std::uint64_t, double>>(areas.begin(),
+                                                        areas.end()));
+        for (const auto &part : gathered)
+          areas.insert(part.begin(), part.end());
+        n_points = areas.size();
         if (n_points == 0)
           throw std::invalid_argument(
             "Traction: no material point of Body " + std::to_string(body + 1) +
             " lies on its " + Names::face(boundary) + " boundary" +
             (has_region ? " inside the region" : "") + ".");
-        total_area = Utilities::MPI::sum(areas.size() * area, communicator);
+        total_area = n_points * area;
       }
 
       void

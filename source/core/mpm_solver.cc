@@ -41,7 +41,14 @@ namespace impm
               *linear_solver,
               timer)
     , newton_solver(parameters.solver)
-  {}
+  {
+    if (Utilities::MPI::n_mpi_processes(communicator) > 1)
+      grid.connect_cell_weight(
+        [this](const typename Triangulation<dim>::cell_iterator &cell,
+               const typename Triangulation<dim>::CellStatus     status) {
+          return material_points.cell_weight(cell, status);
+        });
+  }
 
 
 
@@ -62,7 +69,10 @@ namespace impm
         StepRecord record = attempt_load_step(control);
         new_state         = record.converged();
         if (record.converged())
-          accept_load_step(record);
+          {
+            accept_load_step(record);
+            balance_load();
+          }
         postprocessors->after_step(record);
         control.update(record.newton);
       }
@@ -107,6 +117,7 @@ namespace impm
     for (const auto &effect : effect_descriptions)
       pcout << "    " << effect << '\n';
     pcout << std::flush;
+    balance_load();
 
     postprocessors = std::make_unique<PostprocessorManager<dim>>(
       RunContext<dim>{parameters,
@@ -190,6 +201,29 @@ namespace impm
                                 BasisType::gimp &&
                               parameters.material_points.update_domains,
                             record.step_number);
+  }
+
+
+
+  template <int dim>
+  void
+  MPMSolver<dim>::balance_load()
+  {
+    if (Utilities::MPI::n_mpi_processes(communicator) == 1)
+      return;
+    const double before = material_points.imbalance();
+    if (before <= parameters.material_points.load_imbalance_threshold)
+      return;
+    {
+      TimerOutput::Scope scope(timer, "load balance");
+      grid.repartition([this]() { material_points.prepare_for_repartition(); },
+                       [this]() {
+                         material_points.unpack_after_repartition();
+                       });
+      problem.reinit_vectors();
+    }
+    pcout << "  repartitioned: most points on a process / mean " << before
+          << " -> " << material_points.imbalance() << std::endl;
   }
 
 

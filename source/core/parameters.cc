@@ -228,6 +228,14 @@ namespace impm
                         Patterns::Bool(),
                         "GIMP only: scale the domain half-lengths with the "
                         "stretch U of F = RU (true) or keep them (false).");
+      prm.declare_entry("Load imbalance threshold",
+                        "1.2",
+                        Patterns::Double(1.),
+                        "On more than one process: when the process with "
+                        "the most points holds more than this times the "
+                        "mean, the grid is repartitioned with cells weighted "
+                        "by their points (checked after seeding and after "
+                        "every converged load step; >= 1).");
       prm.leave_subsection();
     }
 
@@ -235,8 +243,9 @@ namespace impm
     MaterialPoints::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Material points");
-      basis          = basis_type_from_string(prm.get("Basis"));
-      update_domains = prm.get_bool("Update domains");
+      basis                    = basis_type_from_string(prm.get("Basis"));
+      update_domains           = prm.get_bool("Update domains");
+      load_imbalance_threshold = prm.get_double("Load imbalance threshold");
       prm.leave_subsection();
     }
 
@@ -276,9 +285,11 @@ namespace impm
                         "that needs more stops the run with an error.");
       prm.declare_entry("Linear solver",
                         "direct",
-                        Patterns::Selection("direct|GMRES with AMG"),
-                        "direct (Trilinos Amesos KLU) or GMRES with AMG "
-                        "(Trilinos ML) preconditioning.");
+                        Patterns::Selection("direct|MUMPS|GMRES with AMG"),
+                        "direct (Trilinos Amesos KLU, a serial "
+                        "factorisation), MUMPS (Trilinos Amesos MUMPS, a "
+                        "factorisation shared by the processes) or GMRES "
+                        "with AMG (Trilinos ML) preconditioning.");
       prm.declare_entry("Linear tolerance",
                         "1e-12",
                         Patterns::Double(1e-16, 1e-2),

@@ -24,6 +24,15 @@ namespace impm
     , dof_handler(triangulation)
   {
     make_triangulation();
+    distribute_dofs();
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::distribute_dofs()
+  {
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
@@ -32,6 +41,28 @@ namespace impm
                                                                 communicator);
     apply_face_conditions();
     map_nodes_to_dofs();
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::connect_cell_weight(const CellWeight &weight)
+  {
+    triangulation.signals.weight.connect(weight);
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::repartition(const std::function<void()> &prepare,
+                                   const std::function<void()> &unpack)
+  {
+    prepare();
+    triangulation.repartition();
+    unpack();
+    distribute_dofs();
   }
 
 

@@ -304,6 +304,67 @@ namespace impm
 
 
 
+  template <int dim>
+  double
+  MaterialPoints<dim>::imbalance() const
+  {
+    const double most =
+      Utilities::MPI::max(double(n_local_points()), communicator);
+    const double mean =
+      double(n_global_points()) / Utilities::MPI::n_mpi_processes(communicator);
+    return mean > 0. ? most / mean : 1.;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MaterialPoints<dim>::cell_weight(
+    const typename Triangulation<dim>::cell_iterator &cell,
+    const typename Triangulation<dim>::CellStatus     status) const
+  {
+    constexpr unsigned int point_weight = 1000;
+    unsigned int           n_points     = 0;
+    switch (status)
+      {
+        case Triangulation<dim>::CELL_PERSIST:
+        case Triangulation<dim>::CELL_REFINE:
+          n_points = particle_handler.n_particles_in_cell(cell);
+          break;
+        case Triangulation<dim>::CELL_COARSEN:
+          for (const auto &child : cell->child_iterators())
+            n_points += particle_handler.n_particles_in_cell(child);
+          break;
+        default:
+          break;
+      }
+    return point_weight * n_points;
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::prepare_for_repartition()
+  {
+    particle_handler.prepare_for_coarsening_and_refinement();
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::unpack_after_repartition()
+  {
+    const auto n_before = n_global_points();
+    particle_handler.unpack_after_coarsening_and_refinement();
+    if (particle_handler.n_global_particles() != n_before)
+      throw std::runtime_error(
+        "Material points were lost while repartitioning the grid.");
+  }
+
+
+
   template class MaterialPoints<2>;
   template class MaterialPoints<3>;
 } // namespace impm

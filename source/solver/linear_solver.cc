@@ -12,12 +12,18 @@ namespace impm
   namespace
   {
     /**
-     * @brief Trilinos' KLU sparse direct solver (serial factorisation), with
-     * an optional condition estimate from the factorisation it has made.
+     * @brief A sparse direct solver of Trilinos Amesos (KLU, a serial
+     * factorisation, or MUMPS, a distributed one), with an optional
+     * condition estimate from the factorisation it has made.
      */
     class DirectSolver : public LinearSolver
     {
     public:
+      /** @brief The Amesos solver @p amesos_name ("Amesos_Klu", ...). */
+      explicit DirectSolver(const std::string &amesos_name)
+        : amesos_name(amesos_name)
+      {}
+
       void
       solve(const TrilinosWrappers::SparseMatrix &matrix,
             TrilinosWrappers::MPI::Vector        &solution,
@@ -25,8 +31,7 @@ namespace impm
             const bool                            estimate_condition) override
       {
         SolverControl                                  control(1, 0);
-        TrilinosWrappers::SolverDirect::AdditionalData data(false,
-                                                            "Amesos_Klu");
+        TrilinosWrappers::SolverDirect::AdditionalData data(false, amesos_name);
         TrilinosWrappers::SolverDirect                 solver(control, data);
         solver.initialize(matrix);
         solution = 0.;
@@ -52,6 +57,9 @@ namespace impm
                                     condition :
                                     std::numeric_limits<double>::infinity();
       }
+
+    private:
+      const std::string amesos_name;
     };
 
 
@@ -99,7 +107,9 @@ namespace impm
     switch (parameters.linear_solver)
       {
         case Parameters::LinearSolverType::direct:
-          return std::make_unique<DirectSolver>();
+          return std::make_unique<DirectSolver>("Amesos_Klu");
+        case Parameters::LinearSolverType::mumps:
+          return std::make_unique<DirectSolver>("Amesos_Mumps");
         case Parameters::LinearSolverType::gmres_amg:
           return std::make_unique<GmresAmgSolver>(parameters.linear_tolerance);
       }

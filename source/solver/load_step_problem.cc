@@ -17,6 +17,15 @@ namespace impm
     , linear_solver(linear_solver)
     , timer(timer)
   {
+    reinit_vectors();
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepProblem<dim>::reinit_vectors()
+  {
     grid.reinit_vector(displacement_increment);
     grid.reinit_vector(internal_force);
     grid.reinit_vector(external_force);

@@ -83,6 +83,11 @@ namespace impm
     void
     accept_load_step(StepRecord &record);
 
+    /** On several processes, repartition the grid by the points' cell
+     *  weights when the points are out of balance. */
+    void
+    balance_load();
+
     const Parameters::All<dim>                          &parameters;
     const std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects;
     const MPI_Comm                                       communicator;

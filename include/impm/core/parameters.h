@@ -130,15 +130,17 @@ namespace impm
     /** @brief The linear solver of each Newton iteration. */
     enum class LinearSolverType
     {
-      /** Trilinos Amesos KLU. */
+      /** Trilinos Amesos KLU (serial factorisation). */
       direct,
+      /** Trilinos Amesos MUMPS (distributed factorisation). */
+      mumps,
       /** GMRES preconditioned with Trilinos ML. */
       gmres_amg
     };
 
     /** @brief The scene's names of the linear solvers, in enum order. */
-    constexpr std::array<const char *, 2> linear_solver_names = {
-      {"direct", "GMRES with AMG"}};
+    constexpr std::array<const char *, 3> linear_solver_names = {
+      {"direct", "MUMPS", "GMRES with AMG"}};
 
     /** @brief An analytical solution to compare with. */
     enum class AnalyticalSolution
@@ -226,6 +228,9 @@ namespace impm
       BasisType basis;
       /** Whether GIMP domains stretch with the deformation. */
       bool update_domains;
+      /** Largest ratio of the most points on a process to the mean before
+       *  the grid is repartitioned. */
+      double load_imbalance_threshold;
 
       /** @brief Declare the entries in subsection "Material points". */
       static void

@@ -19,6 +19,8 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -52,6 +54,29 @@ namespace impm
      */
     BackgroundGrid(const Parameters::Grid<dim> &parameters,
                    const MPI_Comm               communicator);
+
+    /** @brief The weight of a cell in a repartition (see
+     *  Triangulation::Signals::weight). */
+    using CellWeight = std::function<
+      unsigned int(const typename Triangulation<dim>::cell_iterator &,
+                   const typename Triangulation<dim>::CellStatus)>;
+
+    /**
+     * @brief Add @p weight to every cell's weight in repartition().
+     */
+    void
+    connect_cell_weight(const CellWeight &weight);
+
+    /**
+     * @brief Repartition the cells over the processes by their weights and
+     * distribute the DoFs, constraints, reaction DoFs and node map anew.
+     * @param prepare Called before the cells move (e.g. to pack the
+     * particles).
+     * @param unpack Called after they have moved.
+     */
+    void
+    repartition(const std::function<void()> &prepare,
+                const std::function<void()> &unpack);
 
     /** @brief The triangulation. */
     const parallel::distributed::Triangulation<dim> &
@@ -189,6 +214,9 @@ namespace impm
     /** Make the triangulation from a coarse mesh refined globally. */
     void
     make_triangulation();
+    /** Distribute the DoFs and build everything that depends on them. */
+    void
+    distribute_dofs();
 
     /** Constraints, prescribed and reaction DoFs of the face conditions. */
     void

@@ -147,6 +147,30 @@ namespace impm
     PointMeasures<dim>
     measure() const;
 
+    /**
+     * @brief The most points a process holds over the mean per process: 1
+     * when the points are balanced (collective).
+     */
+    double
+    imbalance() const;
+
+    /**
+     * @brief A cell's weight in a repartition: its points, each weighing
+     * as much as the cell itself (deal.II counts 1000 for a cell), since the
+     * stress update and the assembly, per point, dominate the work.
+     */
+    unsigned int
+    cell_weight(const typename Triangulation<dim>::cell_iterator &cell,
+                const typename Triangulation<dim>::CellStatus     status) const;
+
+    /** @brief Pack the points before the cells move between processes. */
+    void
+    prepare_for_repartition();
+
+    /** @brief Unpack the points after the cells have moved. */
+    void
+    unpack_after_repartition();
+
   private:
     /** Seed the points of every body in the locally owned cells. */
     void

@@ -26,6 +26,7 @@ namespace impm
                                                          "assembly",
                                                          "linear solve",
                                                          "point update",
+                                                         "load balance",
                                                          "output"};
 
   /**

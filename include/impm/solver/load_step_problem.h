@@ -39,6 +39,13 @@ namespace impm
                     TimerOutput                   &timer);
 
     /**
+     * @brief Size the nodal vectors for the grid's current DoF partition
+     * (after a repartition).
+     */
+    void
+    reinit_vectors();
+
+    /**
      * @brief Start a step from load factor @p start to @p target: the
      * increment is zero but on the prescribed faces, which move by their
      * share; the external force is that of @p target.
