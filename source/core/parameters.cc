@@ -294,6 +294,12 @@ namespace impm
                         "1e-12",
                         Patterns::Double(1e-16, 1e-2),
                         "Relative residual of the iterative linear solver.");
+      prm.declare_entry("Linear iterations",
+                        "1000",
+                        Patterns::Integer(1),
+                        "Iterations allowed to the iterative linear solver "
+                        "per solve; a solve that needs more fails the "
+                        "Newton solve (and the step is cut).");
       prm.declare_entry("Step control",
                         "true",
                         Patterns::Bool(),
@@ -351,6 +357,7 @@ namespace impm
       linear_solver           = static_cast<LinearSolverType>(selection_index(
         linear_solver_names, "Solver/Linear solver", prm.get("Linear solver")));
       linear_tolerance        = prm.get_double("Linear tolerance");
+      linear_iterations       = prm.get_integer("Linear iterations");
       step_control            = prm.get_bool("Step control");
       minimum_step            = prm.get_double("Minimum load step");
       divergence_factor       = prm.get_double("Divergence factor");

@@ -163,7 +163,8 @@ namespace impm
       void
       write_header(const RunContext<dim> &, std::ostream &out) override
       {
-        out << "step,iteration,relative_residual";
+        out << "step,iteration,relative_residual,linear_iterations,"
+               "linear_solve_seconds";
       }
 
       void
@@ -171,9 +172,20 @@ namespace impm
                  const StepRecord &record,
                  std::ostream     &out) override
       {
-        for (unsigned int k = 0; k < record.newton.residuals.size(); ++k)
-          out << record.step_number << ',' << k << ',' << std::setprecision(6)
-              << record.newton.residuals[k] << '\n';
+        // Each residual, and the linear solve that followed it (none after
+        // the last).
+        const auto &newton = record.newton;
+        for (unsigned int k = 0; k < newton.residuals.size(); ++k)
+          {
+            out << record.step_number << ',' << k << ',' << std::setprecision(6)
+                << newton.residuals[k] << ',';
+            if (k < newton.linear_solves.size())
+              out << newton.linear_solves[k].iterations << ','
+                  << newton.linear_solves[k].seconds;
+            else
+              out << ',';
+            out << '\n';
+          }
       }
     };
 

@@ -1,3 +1,6 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -6,11 +9,43 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace impm
 {
   namespace
   {
+    /**
+     * @brief The line of an exception's text that says what went wrong:
+     * deal.II's "Additional information" if there is one, else the first
+     * non-empty line.
+     */
+    std::string
+    cause_of(const std::exception &error)
+    {
+      std::istringstream text(error.what());
+      std::string        line, first;
+      bool               next_is_cause = false;
+      while (std::getline(text, line))
+        {
+          const auto start = line.find_first_not_of(" \t");
+          if (start == std::string::npos)
+            continue;
+          line = line.substr(start);
+          if (line.find_first_not_of('-') == std::string::npos)
+            continue; // a rule of dashes
+          if (next_is_cause)
+            return line;
+          if (line.rfind("Additional information:", 0) == 0)
+            next_is_cause = true;
+          else if (first.empty())
+            first = line;
+        }
+      return first;
+    }
+
+
+
     /**
      * @brief A sparse direct solver of Trilinos Amesos (KLU, a serial
      * factorisation, or MUMPS, a distributed one), with an optional
@@ -19,16 +54,23 @@ namespace impm
     class DirectSolver : public LinearSolver
     {
     public:
-      /** @brief The Amesos solver @p amesos_name ("Amesos_Klu", ...). */
-      explicit DirectSolver(const std::string &amesos_name)
+      /**
+       * @brief The Amesos solver @p amesos_name ("Amesos_Klu", ...), called
+       * @p scene_name in the scene.
+       */
+      DirectSolver(const std::string &amesos_name,
+                   const std::string &scene_name)
         : amesos_name(amesos_name)
+        , scene_name(scene_name)
       {}
 
+    protected:
       void
-      solve(const TrilinosWrappers::SparseMatrix &matrix,
-            TrilinosWrappers::MPI::Vector        &solution,
-            const TrilinosWrappers::MPI::Vector  &rhs,
-            const bool                            estimate_condition) override
+      try_solve(const TrilinosWrappers::SparseMatrix &matrix,
+                TrilinosWrappers::MPI::Vector        &solution,
+                const TrilinosWrappers::MPI::Vector  &rhs,
+                const bool                            estimate_condition,
+                LinearSolveReport                    &report) override
       {
         SolverControl                                  control(1, 0);
         TrilinosWrappers::SolverDirect::AdditionalData data(false, amesos_name);
@@ -52,35 +94,46 @@ namespace impm
             x            = y;
             x /= inverse_norm;
           }
-        const double condition  = matrix.frobenius_norm() * inverse_norm;
-        last_condition_estimate = std::isfinite(condition) ?
-                                    condition :
-                                    std::numeric_limits<double>::infinity();
+        const double condition    = matrix.frobenius_norm() * inverse_norm;
+        report.condition_estimate = std::isfinite(condition) ?
+                                      condition :
+                                      std::numeric_limits<double>::infinity();
+      }
+
+      std::string
+      name() const override
+      {
+        return scene_name;
       }
 
     private:
       const std::string amesos_name;
+      const std::string scene_name;
     };
 
 
 
     /**
      * @brief GMRES preconditioned by Trilinos ML's algebraic multigrid, to
-     * 'Solver/Linear tolerance' relative to the right-hand side.
+     * 'Solver/Linear tolerance' relative to the right-hand side in at most
+     * 'Solver/Linear iterations' iterations.
      */
     class GmresAmgSolver : public LinearSolver
     {
     public:
-      /** @brief A Krylov solver to the relative @p tolerance. */
-      explicit GmresAmgSolver(const double tolerance)
-        : tolerance(tolerance)
+      /** @brief A Krylov solver with the scene's tolerance and limit. */
+      explicit GmresAmgSolver(const Parameters::Solver &parameters)
+        : tolerance(parameters.linear_tolerance)
+        , max_iterations(parameters.linear_iterations)
       {}
 
+    protected:
       void
-      solve(const TrilinosWrappers::SparseMatrix &matrix,
-            TrilinosWrappers::MPI::Vector        &solution,
-            const TrilinosWrappers::MPI::Vector  &rhs,
-            const bool /*estimate_condition*/) override
+      try_solve(const TrilinosWrappers::SparseMatrix &matrix,
+                TrilinosWrappers::MPI::Vector        &solution,
+                const TrilinosWrappers::MPI::Vector  &rhs,
+                const bool /*estimate_condition*/,
+                LinearSolveReport &report) override
       {
         TrilinosWrappers::PreconditionAMG                 amg;
         TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
@@ -88,16 +141,68 @@ namespace impm
         amg_data.higher_order_elements = false;
         amg_data.smoother_sweeps       = 2;
         amg.initialize(matrix, amg_data);
-        SolverControl                 control(1000, tolerance * rhs.l2_norm());
+        const double                  target = tolerance * rhs.l2_norm();
+        SolverControl                 control(max_iterations, target);
         TrilinosWrappers::SolverGMRES solver(control);
         solution = 0.;
-        solver.solve(matrix, solution, rhs, amg);
+        try
+          {
+            solver.solve(matrix, solution, rhs, amg);
+          }
+        catch (const SolverControl::NoConvergence &no_convergence)
+          {
+            report.iterations = no_convergence.last_step;
+            std::ostringstream message;
+            message << "no convergence in " << no_convergence.last_step
+                    << " iterations, residual " << no_convergence.last_residual
+                    << " > " << target;
+            throw std::runtime_error(message.str());
+          }
+        report.iterations = control.last_step();
+      }
+
+      std::string
+      name() const override
+      {
+        return "GMRES with AMG";
       }
 
     private:
-      const double tolerance;
+      const double       tolerance;
+      const unsigned int max_iterations;
     };
   } // namespace
+
+
+
+  LinearSolveReport
+  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
+                      TrilinosWrappers::MPI::Vector        &solution,
+                      const TrilinosWrappers::MPI::Vector  &rhs,
+                      const bool                            estimate_condition)
+  {
+    LinearSolveReport report;
+    Timer             timer;
+    try
+      {
+        try_solve(matrix, solution, rhs, estimate_condition, report);
+      }
+    catch (const std::exception &error)
+      {
+        report.success = false;
+        report.failure = name() + ": " + cause_of(error);
+      }
+    // A failure on one process is a failure on all.
+    if (Utilities::MPI::min(report.success ? 1 : 0,
+                            rhs.get_mpi_communicator()) == 0 &&
+        report.success)
+      {
+        report.success = false;
+        report.failure = name() + ": failed on another process";
+      }
+    report.seconds = timer.wall_time();
+    return report;
+  }
 
 
 
@@ -107,11 +212,11 @@ namespace impm
     switch (parameters.linear_solver)
       {
         case Parameters::LinearSolverType::direct:
-          return std::make_unique<DirectSolver>("Amesos_Klu");
+          return std::make_unique<DirectSolver>("Amesos_Klu", "direct (KLU)");
         case Parameters::LinearSolverType::mumps:
-          return std::make_unique<DirectSolver>("Amesos_Mumps");
+          return std::make_unique<DirectSolver>("Amesos_Mumps", "MUMPS");
         case Parameters::LinearSolverType::gmres_amg:
-          return std::make_unique<GmresAmgSolver>(parameters.linear_tolerance);
+          return std::make_unique<GmresAmgSolver>(parameters);
       }
     throw std::logic_error("Unknown linear solver type.");
   }

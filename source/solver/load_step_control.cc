@@ -49,13 +49,14 @@ namespace impm
       }
 
     failures << "\n  load " << next << " (increment " << next - load_factor
-             << "): " << name_of(record.outcome) << ", relative residuals:";
+             << "): " << record.outcome_description()
+             << ", relative residuals:";
     for (const double residual : record.residuals)
       failures << ' ' << residual;
     std::ostringstream message;
     message << "Load step " << n_converged + 1 << " (from load factor "
             << load_factor << " to " << next << "): Newton "
-            << name_of(record.outcome) << '.';
+            << record.outcome_description() << '.';
     if (!parameters.step_control)
       throw std::runtime_error(message.str() +
                                " Relative residuals:" + failures.str());

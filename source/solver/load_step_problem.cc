@@ -93,16 +93,17 @@ namespace impm
 
 
   template <int dim>
-  double
+  LinearSolveReport
   LoadStepProblem<dim>::solve_and_update(const bool estimate_condition)
   {
-    TimerOutput::Scope scope(timer, "linear solve");
-    linear_solver.solve(system.matrix,
-                        system.solution,
-                        system.rhs,
-                        estimate_condition);
-    system.add_solution_to(displacement_increment);
-    return estimate_condition ? linear_solver.condition_estimate() : 0.;
+    TimerOutput::Scope      scope(timer, "linear solve");
+    const LinearSolveReport report = linear_solver.solve(system.matrix,
+                                                         system.solution,
+                                                         system.rhs,
+                                                         estimate_condition);
+    if (report.success)
+      system.add_solution_to(displacement_increment);
+    return report;
   }
 
 

@@ -19,6 +19,16 @@ namespace impm
 
 
 
+  std::string
+  NewtonRecord::outcome_description() const
+  {
+    if (outcome == NewtonOutcome::linear_solve_failed && !linear_solves.empty())
+      return name_of(outcome) + " (" + linear_solves.back().failure + ")";
+    return name_of(outcome);
+  }
+
+
+
   bool
   NewtonRecord::is_measured(const double order)
   {
@@ -60,9 +70,15 @@ namespace impm
             problem.assemble_matrix();
             const bool estimate =
               parameters.estimate_condition && iteration == 0;
-            const double condition = problem.solve_and_update(estimate);
+            record.linear_solves.push_back(problem.solve_and_update(estimate));
             if (estimate)
-              record.condition_estimate = condition;
+              record.condition_estimate =
+                record.linear_solves.back().condition_estimate;
+            if (!record.linear_solves.back().success)
+              {
+                record.outcome = NewtonOutcome::linear_solve_failed;
+                return record;
+              }
             continue;
           }
         return record;

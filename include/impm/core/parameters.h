@@ -256,6 +256,8 @@ namespace impm
       LinearSolverType linear_solver;
       /** Relative tolerance of the iterative linear solver. */
       double linear_tolerance;
+      /** Iterations allowed to the iterative linear solver per solve. */
+      unsigned int linear_iterations;
       /** Cut failed load steps and grow easy ones (else a failure stops). */
       bool step_control;
       /** Smallest load increment, as a fraction of the total load. */

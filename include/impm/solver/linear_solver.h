@@ -1,22 +1,40 @@
 #ifndef impm_solver_linear_solver_h
 #define impm_solver_linear_solver_h
 
-#include <deal.II/base/mpi.h>
-
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <impm/core/parameters.h>
 
 #include <memory>
+#include <string>
 
 namespace impm
 {
   using namespace dealii;
 
+  /** @brief What one linear solve did. */
+  struct LinearSolveReport
+  {
+    /** Whether the solve succeeded. */
+    bool success = true;
+    /** Krylov iterations (0 for a direct solver). */
+    unsigned int iterations = 0;
+    /** Wall time of the solve, in seconds. */
+    double seconds = 0.;
+    /** The condition estimate, if asked for and available (else 0). */
+    double condition_estimate = 0.;
+    /** If it failed: one line naming the solver and the cause. */
+    std::string failure;
+  };
+
   /**
    * @brief The linear solver of the Newton iterations, chosen once from the
    * scene's 'Solver/Linear solver'.
+   *
+   * A solve that fails (no convergence, a failed factorisation) is reported,
+   * never thrown: the Newton solve then fails, and the load-step control
+   * cuts the step or stops the run with the report's line.
    *
    * To add a solver: a value of Parameters::LinearSolverType with its name in
    * Parameters::linear_solver_names, a class derived from this one in
@@ -38,27 +56,29 @@ namespace impm
     /**
      * @brief Solve @p matrix @p solution = @p rhs.
      * @param estimate_condition Also estimate the condition number of
-     * @p matrix, where the solver can (see condition_estimate()).
+     * @p matrix, where the solver can.
      */
-    virtual void
+    LinearSolveReport
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           TrilinosWrappers::MPI::Vector        &solution,
           const TrilinosWrappers::MPI::Vector  &rhs,
-          const bool                            estimate_condition) = 0;
-
-    /**
-     * @brief The condition estimate of the last solve that asked for one:
-     * 0 if none was made, infinity if the estimate was not finite.
-     */
-    double
-    condition_estimate() const
-    {
-      return last_condition_estimate;
-    }
+          const bool                            estimate_condition);
 
   protected:
-    /** Set by solve() when asked to estimate. */
-    double last_condition_estimate = 0.;
+    /**
+     * @brief The solve itself: fills @p report, and throws (anything) on
+     * failure; solve() turns that into a failed report.
+     */
+    virtual void
+    try_solve(const TrilinosWrappers::SparseMatrix &matrix,
+              TrilinosWrappers::MPI::Vector        &solution,
+              const TrilinosWrappers::MPI::Vector  &rhs,
+              const bool                            estimate_condition,
+              LinearSolveReport                    &report) = 0;
+
+    /** @brief The solver's name in the scene, for failure reports. */
+    virtual std::string
+    name() const = 0;
   };
 } // namespace impm
 

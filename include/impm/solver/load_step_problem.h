@@ -59,7 +59,7 @@ namespace impm
     void
     assemble_matrix() override;
 
-    double
+    LinearSolveReport
     solve_and_update(const bool estimate_condition) override;
 
     /**

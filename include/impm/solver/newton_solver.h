@@ -2,6 +2,7 @@
 #define impm_solver_newton_solver_h
 
 #include <impm/core/parameters.h>
+#include <impm/solver/linear_solver.h>
 
 #include <array>
 #include <limits>
@@ -23,18 +24,21 @@ namespace impm
     not_finite,
     /** A point's deformation increment has J <= 0. */
     inverted_point,
+    /** A linear solve failed (see NewtonRecord::linear_solves). */
+    linear_solve_failed,
     /** Converged, but a point moved more than 'Solver/Maximum point
      *  increment' cells (set by the load-step control, not by Newton). */
     increment_too_large
   };
 
   /** @brief The words for each NewtonOutcome, as the log and errors print. */
-  constexpr std::array<const char *, 6> newton_outcome_names = {
+  constexpr std::array<const char *, 7> newton_outcome_names = {
     {"converged",
      "iteration limit",
      "diverged",
      "non-finite residual",
      "inverted point",
+     "linear solve failed",
      "point increment too large"}};
 
   /** @brief The name of @p outcome. */
@@ -71,12 +75,11 @@ namespace impm
     assemble_matrix() = 0;
 
     /**
-     * @brief Solve with the last matrix and residual and add the correction
-     * to the iterate.
-     * @return The condition estimate of the matrix if @p estimate_condition
-     * (0 if the linear solver cannot estimate it).
+     * @brief Solve with the last matrix and residual and, if the solve
+     * succeeded, add the correction to the iterate.
+     * @param estimate_condition Also estimate the matrix's condition number.
      */
-    virtual double
+    virtual LinearSolveReport
     solve_and_update(const bool estimate_condition) = 0;
   };
 
@@ -89,6 +92,12 @@ namespace impm
     std::vector<double> residuals;
     /** Condition estimate of the first matrix (0 if not estimated). */
     double condition_estimate = 0.;
+    /** The linear solve of each iteration (the last may have failed). */
+    std::vector<LinearSolveReport> linear_solves;
+
+    /** @brief The outcome's name, with the cause of a failed linear solve. */
+    std::string
+    outcome_description() const;
 
     /** @brief Newton iterations made (linear solves). */
     unsigned int

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# A linear solve that fails is a failed Newton solve, reported in one line:
+# the collapse at h = 0.5 m with GMRES allowed one iteration (too few for
+# 1e-14) and the step control off must stop in load step 1 with the message
+# naming the solver, its iterations and its residual; steps.csv and
+# newton.csv hold the failed attempt. With 200 iterations to 1e-10 the run
+# completes.
+# Usage: linear_solve_failure.sh IMPM SCENE [MPIEXEC N]
+scene=$2
+source "$(dirname "$0")/script_helpers.sh" "$@"
+settings=(--set "Solver/Linear solver=GMRES with AMG" --set "Solver/Step control=false"
+          --set "Solver/Load steps=40")
+
+"${launcher[@]}" "$impm" "$scene" "${settings[@]}" --set "Solver/Linear iterations=1" \
+  --set "Solver/Linear tolerance=1e-14" \
+  > log.txt 2>&1 && fail "the run did not stop"
+grep -qE "^Error: Load step 1 \(from load factor 0 to 0.025\): Newton linear solve failed \(GMRES with AMG: no convergence in 1 iterations, residual [0-9.e+-]+ > [0-9.e+-]+\)\. Relative residuals:$" log.txt ||
+  fail "no one-line message naming the solver, its iterations and residual"
+[ "$(grep -c 'Error' log.txt)" -eq 1 ] || fail "more than one error printed"
+grep -q "An error occurred in line" log.txt && fail "deal.II's exception text was printed"
+tail -1 results/steps.csv | grep -q "^1,0.025,0.025,0,0," || fail "steps.csv lacks the failed attempt"
+[ "$(tail -1 results/newton.csv)" != "" ] && tail -1 results/newton.csv | grep -q "^1,0,1,1," ||
+  fail "newton.csv lacks the failed solve"
+
+"${launcher[@]}" "$impm" "$scene" "${settings[@]}" --set "Solver/Linear tolerance=1e-10" \
+  --set "Testing/Enabled=false" --set "Solver/Linear iterations=200" > log.txt 2>&1 ||
+  fail "with 200 iterations allowed the run failed"
+grep -q "^step   1  load 0.0250  iterations" log.txt || fail "step 1 did not converge"
+echo "linear_solve_failure: the failed solve stopped the run with one clear line"
