@@ -9,6 +9,7 @@
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
 settings=(--set "Solver/Linear solver=GMRES with AMG" --set "Solver/Step control=false"
+          --set "Solver/Adaptive linear tolerance=false"
           --set "Solver/Load steps=40")
 
 "${launcher[@]}" "$impm" "$scene" "${settings[@]}" --set "Solver/Linear iterations=1" \

@@ -293,7 +293,18 @@ namespace impm
       prm.declare_entry("Linear tolerance",
                         "1e-12",
                         Patterns::Double(1e-16, 1e-2),
-                        "Relative residual of the iterative linear solver.");
+                        "Relative residual of the iterative linear solver "
+                        "(with 'Adaptive linear tolerance', the tightest it "
+                        "is asked for).");
+      prm.declare_entry("Adaptive linear tolerance",
+                        "true",
+                        Patterns::Bool(),
+                        "Iterative linear solver only: solve to min(0.1, "
+                        "max(0.1 r, Tolerance / (2 r))), r the Newton "
+                        "iteration's relative residual, but not below "
+                        "'Linear tolerance' (cheap far from the solution, "
+                        "still quadratic near it); false: always to 'Linear "
+                        "tolerance'.");
       prm.declare_entry("Linear iterations",
                         "1000",
                         Patterns::Integer(1),
@@ -349,21 +360,22 @@ namespace impm
     Solver::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
-      formulation             = static_cast<Formulation>(selection_index(
+      formulation               = static_cast<Formulation>(selection_index(
         formulation_names, "Solver/Formulation", prm.get("Formulation")));
-      n_load_steps            = prm.get_integer("Load steps");
-      tolerance               = prm.get_double("Tolerance");
-      max_iterations          = prm.get_integer("Maximum iterations");
-      linear_solver           = static_cast<LinearSolverType>(selection_index(
+      n_load_steps              = prm.get_integer("Load steps");
+      tolerance                 = prm.get_double("Tolerance");
+      max_iterations            = prm.get_integer("Maximum iterations");
+      linear_solver             = static_cast<LinearSolverType>(selection_index(
         linear_solver_names, "Solver/Linear solver", prm.get("Linear solver")));
-      linear_tolerance        = prm.get_double("Linear tolerance");
-      linear_iterations       = prm.get_integer("Linear iterations");
-      step_control            = prm.get_bool("Step control");
-      minimum_step            = prm.get_double("Minimum load step");
-      divergence_factor       = prm.get_double("Divergence factor");
-      easy_iterations         = prm.get_integer("Easy step iterations");
-      maximum_point_increment = prm.get_double("Maximum point increment");
-      estimate_condition      = prm.get_bool("Estimate condition number");
+      linear_tolerance          = prm.get_double("Linear tolerance");
+      linear_iterations         = prm.get_integer("Linear iterations");
+      adaptive_linear_tolerance = prm.get_bool("Adaptive linear tolerance");
+      step_control              = prm.get_bool("Step control");
+      minimum_step              = prm.get_double("Minimum load step");
+      divergence_factor         = prm.get_double("Divergence factor");
+      easy_iterations           = prm.get_integer("Easy step iterations");
+      maximum_point_increment   = prm.get_double("Maximum point increment");
+      estimate_condition        = prm.get_bool("Estimate condition number");
       prm.leave_subsection();
     }
 

@@ -187,6 +187,7 @@ namespace impm
   BackgroundGrid<dim>::map_nodes_to_dofs()
   {
     dofs_of_node.clear();
+    component_of_local_dof.assign(n_local_dofs(), 0);
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
@@ -197,8 +198,10 @@ namespace impm
               const auto [component, vertex] = fe.system_to_component_index(i);
               const std::uint64_t node =
                 grid.node_index(grid.nearest_node(cell->vertex(vertex)));
-              dofs_of_node[node][component] =
+              const unsigned int local =
                 partitioner->global_to_local(cell_dofs[i]);
+              dofs_of_node[node][component] = local;
+              component_of_local_dof[local] = component;
             }
         }
   }

@@ -69,8 +69,9 @@ namespace impm
       try_solve(const TrilinosWrappers::SparseMatrix &matrix,
                 TrilinosWrappers::MPI::Vector        &solution,
                 const TrilinosWrappers::MPI::Vector  &rhs,
-                const bool                            estimate_condition,
-                LinearSolveReport                    &report) override
+                const double /*relative_tolerance*/,
+                const bool         estimate_condition,
+                LinearSolveReport &report) override
       {
         SolverControl                                  control(1, 0);
         TrilinosWrappers::SolverDirect::AdditionalData data(false, amesos_name);
@@ -115,23 +116,35 @@ namespace impm
 
     /**
      * @brief GMRES preconditioned by Trilinos ML's algebraic multigrid, to
-     * 'Solver/Linear tolerance' relative to the right-hand side in at most
-     * 'Solver/Linear iterations' iterations.
+     * the tolerance the Newton solver asks for, relative to the right-hand
+     * side, in at most 'Solver/Linear iterations' iterations.
      */
     class GmresAmgSolver : public LinearSolver
     {
     public:
-      /** @brief A Krylov solver with the scene's tolerance and limit. */
+      /** @brief A Krylov solver with the scene's iteration limit. */
       explicit GmresAmgSolver(const Parameters::Solver &parameters)
-        : tolerance(parameters.linear_tolerance)
-        , max_iterations(parameters.linear_iterations)
+        : max_iterations(parameters.linear_iterations)
       {}
+
+      bool
+      needs_constant_modes() const override
+      {
+        return true;
+      }
+
+      void
+      set_constant_modes(std::vector<std::vector<bool>> masks) override
+      {
+        constant_modes = std::move(masks);
+      }
 
     protected:
       void
       try_solve(const TrilinosWrappers::SparseMatrix &matrix,
                 TrilinosWrappers::MPI::Vector        &solution,
                 const TrilinosWrappers::MPI::Vector  &rhs,
+                const double                          relative_tolerance,
                 const bool /*estimate_condition*/,
                 LinearSolveReport &report) override
       {
@@ -140,9 +153,10 @@ namespace impm
         amg_data.elliptic              = true;
         amg_data.higher_order_elements = false;
         amg_data.smoother_sweeps       = 2;
+        amg_data.constant_modes        = constant_modes;
         amg.initialize(matrix, amg_data);
-        const double                  target = tolerance * rhs.l2_norm();
-        SolverControl                 control(max_iterations, target);
+        const double  target = relative_tolerance * rhs.l2_norm();
+        SolverControl control(max_iterations, target);
         TrilinosWrappers::SolverGMRES solver(control);
         solution = 0.;
         try
@@ -168,8 +182,9 @@ namespace impm
       }
 
     private:
-      const double       tolerance;
       const unsigned int max_iterations;
+      /** Translations of the system (one mask per component). */
+      std::vector<std::vector<bool>> constant_modes;
     };
   } // namespace
 
@@ -179,13 +194,19 @@ namespace impm
   LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
                       TrilinosWrappers::MPI::Vector        &solution,
                       const TrilinosWrappers::MPI::Vector  &rhs,
+                      const double                          relative_tolerance,
                       const bool                            estimate_condition)
   {
     LinearSolveReport report;
     Timer             timer;
     try
       {
-        try_solve(matrix, solution, rhs, estimate_condition, report);
+        try_solve(matrix,
+                  solution,
+                  rhs,
+                  relative_tolerance,
+                  estimate_condition,
+                  report);
       }
     catch (const std::exception &error)
       {

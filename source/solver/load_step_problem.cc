@@ -94,12 +94,14 @@ namespace impm
 
   template <int dim>
   LinearSolveReport
-  LoadStepProblem<dim>::solve_and_update(const bool estimate_condition)
+  LoadStepProblem<dim>::solve_and_update(const double relative_tolerance,
+                                         const bool   estimate_condition)
   {
     TimerOutput::Scope      scope(timer, "linear solve");
     const LinearSolveReport report = linear_solver.solve(system.matrix,
                                                          system.solution,
                                                          system.rhs,
+                                                         relative_tolerance,
                                                          estimate_condition);
     if (report.success)
       system.add_solution_to(displacement_increment);

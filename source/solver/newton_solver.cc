@@ -43,6 +43,21 @@ namespace impm
 
 
 
+  double
+  NewtonSolver::linear_tolerance(const double residual) const
+  {
+    if (!parameters.adaptive_linear_tolerance)
+      return parameters.linear_tolerance;
+    // Eisenstat and Walker's forcing term, and no tighter than needed to
+    // bring the residual below the Newton tolerance.
+    return std::max(parameters.linear_tolerance,
+                    std::min(0.1,
+                             std::max(0.1 * residual,
+                                      0.5 * parameters.tolerance / residual)));
+  }
+
+
+
   NewtonRecord
   NewtonSolver::solve(NonlinearProblem &problem) const
   {
@@ -70,7 +85,9 @@ namespace impm
             problem.assemble_matrix();
             const bool estimate =
               parameters.estimate_condition && iteration == 0;
-            record.linear_solves.push_back(problem.solve_and_update(estimate));
+            record.linear_solves.push_back(
+              problem.solve_and_update(linear_tolerance(residual.relative),
+                                       estimate));
             if (estimate)
               record.condition_estimate =
                 record.linear_solves.back().condition_estimate;

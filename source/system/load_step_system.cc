@@ -239,6 +239,22 @@ namespace impm
 
 
   template <int dim>
+  std::vector<std::vector<bool>>
+  LoadStepSystem<dim>::component_masks() const
+  {
+    std::vector<std::vector<bool>> masks(dim,
+                                         std::vector<bool>(owned.n_elements()));
+    const types::global_dof_index  first =
+      owned.n_elements() > 0 ? owned.nth_index_in_set(0) : 0;
+    for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
+      if (index_in_system[i] != numbers::invalid_dof_index)
+        masks[grid.component(i)][index_in_system[i] - first] = true;
+    return masks;
+  }
+
+
+
+  template <int dim>
   double
   LoadStepSystem<dim>::set_residual(const NodalVector &external,
                                     const NodalVector &internal)

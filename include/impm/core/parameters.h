@@ -258,6 +258,8 @@ namespace impm
       double linear_tolerance;
       /** Iterations allowed to the iterative linear solver per solve. */
       unsigned int linear_iterations;
+      /** Tie the linear tolerance to the Newton residual. */
+      bool adaptive_linear_tolerance;
       /** Cut failed load steps and grow easy ones (else a failure stops). */
       bool step_control;
       /** Smallest load increment, as a fraction of the total load. */

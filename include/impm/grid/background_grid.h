@@ -120,6 +120,13 @@ namespace impm
       return constraints;
     }
 
+    /** @brief The displacement component of the local DoF @p local. */
+    unsigned int
+    component(const unsigned int local) const
+    {
+      return component_of_local_dof[local];
+    }
+
     /** @brief The DoFs this process owns. */
     const IndexSet &
     locally_owned_dofs() const
@@ -240,6 +247,8 @@ namespace impm
     AffineConstraints<double>                          constraints;
 
     /** Local indices (owned and ghost) of each grid node's DoFs. */
+    /** The component of each local DoF. */
+    std::vector<unsigned char> component_of_local_dof;
     std::unordered_map<std::uint64_t, std::array<unsigned int, dim>>
       dofs_of_node;
     /** Prescribed DoFs (local index) and their displacement at full load. */

@@ -54,7 +54,29 @@ namespace impm
     virtual ~LinearSolver() = default;
 
     /**
+     * @brief Whether the solver uses the near null space of the system
+     * (see set_constant_modes()).
+     */
+    virtual bool
+    needs_constant_modes() const
+    {
+      return false;
+    }
+
+    /**
+     * @brief The translations of the current system, for each component a
+     * mask of this process's rows (see LoadStepSystem::component_masks()).
+     */
+    virtual void
+    set_constant_modes(std::vector<std::vector<bool>> masks)
+    {
+      (void)masks;
+    }
+
+    /**
      * @brief Solve @p matrix @p solution = @p rhs.
+     * @param relative_tolerance An iterative solver stops when the residual
+     * has fallen by this factor (a direct solver ignores it).
      * @param estimate_condition Also estimate the condition number of
      * @p matrix, where the solver can.
      */
@@ -62,6 +84,7 @@ namespace impm
     solve(const TrilinosWrappers::SparseMatrix &matrix,
           TrilinosWrappers::MPI::Vector        &solution,
           const TrilinosWrappers::MPI::Vector  &rhs,
+          const double                          relative_tolerance,
           const bool                            estimate_condition);
 
   protected:
@@ -73,6 +96,7 @@ namespace impm
     try_solve(const TrilinosWrappers::SparseMatrix &matrix,
               TrilinosWrappers::MPI::Vector        &solution,
               const TrilinosWrappers::MPI::Vector  &rhs,
+              const double                          relative_tolerance,
               const bool                            estimate_condition,
               LinearSolveReport                    &report) = 0;
 

@@ -60,7 +60,8 @@ namespace impm
     assemble_matrix() override;
 
     LinearSolveReport
-    solve_and_update(const bool estimate_condition) override;
+    solve_and_update(const double relative_tolerance,
+                     const bool   estimate_condition) override;
 
     /**
      * @brief The largest displacement of a point in the current increment,

@@ -77,10 +77,13 @@ namespace impm
     /**
      * @brief Solve with the last matrix and residual and, if the solve
      * succeeded, add the correction to the iterate.
+     * @param relative_tolerance The factor an iterative linear solver must
+     * reduce the residual by (the forcing term).
      * @param estimate_condition Also estimate the matrix's condition number.
      */
     virtual LinearSolveReport
-    solve_and_update(const bool estimate_condition) = 0;
+    solve_and_update(const double relative_tolerance,
+                     const bool   estimate_condition) = 0;
   };
 
   /** @brief What one Newton solve did. */
@@ -143,6 +146,18 @@ namespace impm
     /** @brief Iterate on @p problem from its current iterate. */
     NewtonRecord
     solve(NonlinearProblem &problem) const;
+
+    /**
+     * @brief The relative tolerance of the linear solve after a relative
+     * residual @p residual: 'Solver/Linear tolerance', or with 'Solver/
+     * Adaptive linear tolerance' the forcing term min(0.1, max(0.1 r,
+     * tol / (2 r))) bounded below by it: loose far from the solution, tight
+     * near it so that Newton stays quadratic (Eisenstat and Walker's choice
+     * 2 with gamma = 0.1, alpha = 2, on the relative residual), and never
+     * tighter than needed to bring the residual below the Newton tolerance.
+     */
+    double
+    linear_tolerance(const double residual) const;
 
   private:
     const Parameters::Solver &parameters;

@@ -106,6 +106,14 @@ namespace impm
     norm_in_system(const NodalVector &vector) const;
 
     /**
+     * @brief For each displacement component, which of this process's rows
+     * of the system belong to it: the translations, the near null space an
+     * algebraic multigrid needs for elasticity.
+     */
+    std::vector<std::vector<bool>>
+    component_masks() const;
+
+    /**
      * @brief Set the right-hand side to @p external - @p internal on the
      * system's DoFs; returns its norm. Collective.
      */
