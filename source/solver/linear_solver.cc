@@ -186,6 +186,63 @@ namespace impm
       /** Translations of the system (one mask per component). */
       std::vector<std::vector<bool>> constant_modes;
     };
+
+
+
+    /**
+     * @brief KLU for small systems, GMRES with AMG for large ones (see
+     * LinearSolver::automatic_threshold), chosen per solve.
+     */
+    class AutomaticSolver : public LinearSolver
+    {
+    public:
+      /** @brief Both solvers, with the scene's parameters. */
+      explicit AutomaticSolver(const Parameters::Solver &parameters)
+        : direct("Amesos_Klu", "direct (KLU)")
+        , iterative(parameters)
+      {}
+
+      bool
+      needs_constant_modes() const override
+      {
+        return true;
+      }
+
+      void
+      set_constant_modes(std::vector<std::vector<bool>> masks) override
+      {
+        iterative.set_constant_modes(std::move(masks));
+      }
+
+    protected:
+      void
+      try_solve(const TrilinosWrappers::SparseMatrix &matrix,
+                TrilinosWrappers::MPI::Vector        &solution,
+                const TrilinosWrappers::MPI::Vector  &rhs,
+                const double                          relative_tolerance,
+                const bool                            estimate_condition,
+                LinearSolveReport                    &report) override
+      {
+        chosen = matrix.m() <= automatic_threshold ?
+                   static_cast<LinearSolver *>(&direct) :
+                   static_cast<LinearSolver *>(&iterative);
+        report = chosen->solve(
+          matrix, solution, rhs, relative_tolerance, estimate_condition);
+        if (!report.success)
+          throw std::runtime_error(report.failure);
+      }
+
+      std::string
+      name() const override
+      {
+        return "automatic";
+      }
+
+    private:
+      DirectSolver   direct;
+      GmresAmgSolver iterative;
+      LinearSolver  *chosen = nullptr;
+    };
   } // namespace
 
 
@@ -232,6 +289,8 @@ namespace impm
   {
     switch (parameters.linear_solver)
       {
+        case Parameters::LinearSolverType::automatic:
+          return std::make_unique<AutomaticSolver>(parameters);
         case Parameters::LinearSolverType::direct:
           return std::make_unique<DirectSolver>("Amesos_Klu", "direct (KLU)");
         case Parameters::LinearSolverType::mumps:

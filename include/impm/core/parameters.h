@@ -130,6 +130,9 @@ namespace impm
     /** @brief The linear solver of each Newton iteration. */
     enum class LinearSolverType
     {
+      /** KLU up to LinearSolver::automatic_threshold system DoFs, GMRES with
+       *  AMG above. */
+      automatic,
       /** Trilinos Amesos KLU (serial factorisation). */
       direct,
       /** Trilinos Amesos MUMPS (distributed factorisation). */
@@ -139,8 +142,8 @@ namespace impm
     };
 
     /** @brief The scene's names of the linear solvers, in enum order. */
-    constexpr std::array<const char *, 3> linear_solver_names = {
-      {"direct", "MUMPS", "GMRES with AMG"}};
+    constexpr std::array<const char *, 4> linear_solver_names = {
+      {"automatic", "direct", "MUMPS", "GMRES with AMG"}};
 
     /** @brief An analytical solution to compare with. */
     enum class AnalyticalSolution
