@@ -31,9 +31,14 @@ namespace impm
     class CsvFile : public Postprocessor<dim>
     {
     public:
-      /** @brief The file @p file_name in the output directory. */
-      explicit CsvFile(const std::string &file_name)
+      /**
+       * @brief The file @p file_name in the output directory, with the
+       * header @p fixed_header unless write_header() is overridden.
+       */
+      explicit CsvFile(const std::string &file_name,
+                       const std::string &fixed_header = "")
         : file_name(file_name)
+        , fixed_header(fixed_header)
       {}
 
       void
@@ -61,7 +66,10 @@ namespace impm
     protected:
       /** Write the header (without its line end). */
       virtual void
-      write_header(const RunContext<dim> &context, std::ostream &out) = 0;
+      write_header(const RunContext<dim> &, std::ostream &out)
+      {
+        out << fixed_header;
+      }
 
       /** Write the rows of the attempt @p record, each ended. */
       virtual void
@@ -71,6 +79,7 @@ namespace impm
 
     private:
       const std::string file_name;
+      const std::string fixed_header;
       LogFile           file;
     };
 
@@ -156,17 +165,12 @@ namespace impm
     {
     public:
       NewtonFile()
-        : CsvFile<dim>("newton.csv")
+        : CsvFile<dim>("newton.csv",
+                       "step,iteration,relative_residual,linear_iterations,"
+                       "linear_solve_seconds")
       {}
 
     protected:
-      void
-      write_header(const RunContext<dim> &, std::ostream &out) override
-      {
-        out << "step,iteration,relative_residual,linear_iterations,"
-               "linear_solve_seconds";
-      }
-
       void
       write_rows(const RunContext<dim> &,
                  const StepRecord &record,
@@ -191,30 +195,7 @@ namespace impm
 
 
 
-    /**
-     * @brief The progress log on the terminal: one line per attempt (not in
-     * test mode, whose summary prints the lines itself).
-     */
-    template <int dim>
-    class ProgressLog : public Postprocessor<dim>
-    {
-    public:
-      void
-      after_step(const RunContext<dim> &context,
-                 const StepRecord      &record,
-                 const RunStatistics<dim> &) override
-      {
-        if (!is_root(context.communicator))
-          return;
-        std::cout << record.log_line() << "  residual " << std::scientific
-                  << std::setprecision(2) << record.newton.final_residual()
-                  << std::defaultfloat << std::endl;
-      }
-    };
   } // namespace
   IMPM_REGISTER_POSTPROCESSOR(StepsFile, "steps file", true)
   IMPM_REGISTER_POSTPROCESSOR(NewtonFile, "newton file", true)
-  IMPM_REGISTER_POSTPROCESSOR(ProgressLog,
-                              "progress log",
-                              !context.parameters.testing.enabled)
 } // namespace impm

@@ -66,25 +66,21 @@ namespace impm
 
     protected:
       void
-      try_solve(const TrilinosWrappers::SparseMatrix &matrix,
-                TrilinosWrappers::MPI::Vector        &solution,
-                const TrilinosWrappers::MPI::Vector  &rhs,
-                const double /*relative_tolerance*/,
-                const bool         estimate_condition,
-                LinearSolveReport &report) override
+      try_solve(const LinearSolveRequest &request,
+                LinearSolveReport        &report) override
       {
         SolverControl                                  control(1, 0);
         TrilinosWrappers::SolverDirect::AdditionalData data(false, amesos_name);
         TrilinosWrappers::SolverDirect                 solver(control, data);
-        solver.initialize(matrix);
-        solution = 0.;
-        solver.solve(solution, rhs);
-        if (!estimate_condition)
+        solver.initialize(request.matrix);
+        request.solution = 0.;
+        solver.solve(request.solution, request.rhs);
+        if (!request.estimate_condition)
           return;
         // |A|_F times a lower bound of |A^-1|_2 from three steps of inverse
         // iteration with the factorisation already made.
-        TrilinosWrappers::MPI::Vector x(rhs.locally_owned_elements(),
-                                        rhs.get_mpi_communicator()),
+        TrilinosWrappers::MPI::Vector x(request.rhs.locally_owned_elements(),
+                                        request.rhs.get_mpi_communicator()),
           y(x);
         x                   = 1. / std::sqrt(double(x.size()));
         double inverse_norm = 0.;
@@ -95,7 +91,7 @@ namespace impm
             x            = y;
             x /= inverse_norm;
           }
-        const double condition    = matrix.frobenius_norm() * inverse_norm;
+        const double condition = request.matrix.frobenius_norm() * inverse_norm;
         report.condition_estimate = std::isfinite(condition) ?
                                       condition :
                                       std::numeric_limits<double>::infinity();
@@ -141,12 +137,8 @@ namespace impm
 
     protected:
       void
-      try_solve(const TrilinosWrappers::SparseMatrix &matrix,
-                TrilinosWrappers::MPI::Vector        &solution,
-                const TrilinosWrappers::MPI::Vector  &rhs,
-                const double                          relative_tolerance,
-                const bool /*estimate_condition*/,
-                LinearSolveReport &report) override
+      try_solve(const LinearSolveRequest &request,
+                LinearSolveReport        &report) override
       {
         TrilinosWrappers::PreconditionAMG                 amg;
         TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
@@ -154,14 +146,15 @@ namespace impm
         amg_data.higher_order_elements = false;
         amg_data.smoother_sweeps       = 2;
         amg_data.constant_modes        = constant_modes;
-        amg.initialize(matrix, amg_data);
-        const double  target = relative_tolerance * rhs.l2_norm();
-        SolverControl control(max_iterations, target);
+        amg.initialize(request.matrix, amg_data);
+        const double target =
+          request.relative_tolerance * request.rhs.l2_norm();
+        SolverControl                 control(max_iterations, target);
         TrilinosWrappers::SolverGMRES solver(control);
-        solution = 0.;
+        request.solution = 0.;
         try
           {
-            solver.solve(matrix, solution, rhs, amg);
+            solver.solve(request.matrix, request.solution, request.rhs, amg);
           }
         catch (const SolverControl::NoConvergence &no_convergence)
           {
@@ -193,41 +186,28 @@ namespace impm
      * @brief KLU for small systems, GMRES with AMG for large ones (see
      * LinearSolver::automatic_threshold), chosen per solve.
      */
-    class AutomaticSolver : public LinearSolver
+    class AutomaticSolver : public GmresAmgSolver
     {
     public:
       /** @brief Both solvers, with the scene's parameters. */
       explicit AutomaticSolver(const Parameters::Solver &parameters)
-        : direct("Amesos_Klu", "direct (KLU)")
-        , iterative(parameters)
+        : GmresAmgSolver(parameters)
+        , direct("Amesos_Klu", "direct (KLU)")
       {}
-
-      bool
-      needs_constant_modes() const override
-      {
-        return true;
-      }
-
-      void
-      set_constant_modes(std::vector<std::vector<bool>> masks) override
-      {
-        iterative.set_constant_modes(std::move(masks));
-      }
 
     protected:
       void
-      try_solve(const TrilinosWrappers::SparseMatrix &matrix,
-                TrilinosWrappers::MPI::Vector        &solution,
-                const TrilinosWrappers::MPI::Vector  &rhs,
-                const double                          relative_tolerance,
-                const bool                            estimate_condition,
-                LinearSolveReport                    &report) override
+      try_solve(const LinearSolveRequest &request,
+                LinearSolveReport        &report) override
       {
-        chosen = matrix.m() <= automatic_threshold ?
-                   static_cast<LinearSolver *>(&direct) :
-                   static_cast<LinearSolver *>(&iterative);
-        report = chosen->solve(
-          matrix, solution, rhs, relative_tolerance, estimate_condition);
+        if (request.matrix.m() > automatic_threshold)
+          {
+            choice = "GMRES with AMG";
+            GmresAmgSolver::try_solve(request, report);
+            return;
+          }
+        choice = "direct";
+        report = direct.solve(request);
         if (!report.success)
           throw std::runtime_error(report.failure);
       }
@@ -235,35 +215,26 @@ namespace impm
       std::string
       name() const override
       {
-        return "automatic";
+        return "automatic (" + choice + ")";
       }
 
     private:
-      DirectSolver   direct;
-      GmresAmgSolver iterative;
-      LinearSolver  *chosen = nullptr;
+      DirectSolver direct;
+      /** The solver of the last solve. */
+      std::string choice;
     };
   } // namespace
 
 
 
   LinearSolveReport
-  LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
-                      TrilinosWrappers::MPI::Vector        &solution,
-                      const TrilinosWrappers::MPI::Vector  &rhs,
-                      const double                          relative_tolerance,
-                      const bool                            estimate_condition)
+  LinearSolver::solve(const LinearSolveRequest &request)
   {
     LinearSolveReport report;
     Timer             timer;
     try
       {
-        try_solve(matrix,
-                  solution,
-                  rhs,
-                  relative_tolerance,
-                  estimate_condition,
-                  report);
+        try_solve(request, report);
       }
     catch (const std::exception &error)
       {
@@ -272,7 +243,7 @@ namespace impm
       }
     // A failure on one process is a failure on all.
     if (Utilities::MPI::min(report.success ? 1 : 0,
-                            rhs.get_mpi_communicator()) == 0 &&
+                            request.rhs.get_mpi_communicator()) == 0 &&
         report.success)
       {
         report.success = false;

@@ -98,11 +98,11 @@ namespace impm
                                          const bool   estimate_condition)
   {
     TimerOutput::Scope      scope(timer, "linear solve");
-    const LinearSolveReport report = linear_solver.solve(system.matrix,
-                                                         system.solution,
-                                                         system.rhs,
-                                                         relative_tolerance,
-                                                         estimate_condition);
+    const LinearSolveReport report = linear_solver.solve({system.matrix,
+                                                          system.solution,
+                                                          system.rhs,
+                                                          relative_tolerance,
+                                                          estimate_condition});
     if (report.success)
       system.add_solution_to(displacement_increment);
     return report;

@@ -28,6 +28,22 @@ namespace impm
     std::string failure;
   };
 
+  /** @brief One linear system to solve, and how. */
+  struct LinearSolveRequest
+  {
+    /** The matrix. */
+    const TrilinosWrappers::SparseMatrix &matrix;
+    /** The solution (overwritten). */
+    TrilinosWrappers::MPI::Vector &solution;
+    /** The right-hand side. */
+    const TrilinosWrappers::MPI::Vector &rhs;
+    /** An iterative solver stops when the residual has fallen by this
+     *  factor (a direct solver ignores it). */
+    double relative_tolerance;
+    /** Also estimate the matrix's condition number, where the solver can. */
+    bool estimate_condition;
+  };
+
   /**
    * @brief The linear solver of the Newton iterations, chosen once from the
    * scene's 'Solver/Linear solver'.
@@ -81,19 +97,9 @@ namespace impm
       (void)masks;
     }
 
-    /**
-     * @brief Solve @p matrix @p solution = @p rhs.
-     * @param relative_tolerance An iterative solver stops when the residual
-     * has fallen by this factor (a direct solver ignores it).
-     * @param estimate_condition Also estimate the condition number of
-     * @p matrix, where the solver can.
-     */
+    /** @brief Solve the system of @p request. */
     LinearSolveReport
-    solve(const TrilinosWrappers::SparseMatrix &matrix,
-          TrilinosWrappers::MPI::Vector        &solution,
-          const TrilinosWrappers::MPI::Vector  &rhs,
-          const double                          relative_tolerance,
-          const bool                            estimate_condition);
+    solve(const LinearSolveRequest &request);
 
   protected:
     /**
@@ -101,12 +107,7 @@ namespace impm
      * failure; solve() turns that into a failed report.
      */
     virtual void
-    try_solve(const TrilinosWrappers::SparseMatrix &matrix,
-              TrilinosWrappers::MPI::Vector        &solution,
-              const TrilinosWrappers::MPI::Vector  &rhs,
-              const double                          relative_tolerance,
-              const bool                            estimate_condition,
-              LinearSolveReport                    &report) = 0;
+    try_solve(const LinearSolveRequest &request, LinearSolveReport &report) = 0;
 
     /** @brief The solver's name in the scene, for failure reports. */
     virtual std::string

@@ -19,26 +19,35 @@ namespace impm
     using PointValues = std::pair<types::particle_index, std::vector<double>>;
 
     /**
-     * @brief The summary a test compares ('Testing/Enabled'): the log lines,
+     * @brief What a run prints on the terminal: a line per load-step attempt
+     * as it happens or, in test mode ('Testing/Enabled'), the summary a test
+     * compares, the same on any number of processes: the attempts' lines,
      * the run's totals and checks, the final state, and the points with the
      * lowest ids and those nearest the probes.
      */
     template <int dim>
-    class TestSummary : public Postprocessor<dim>
+    class TerminalOutput : public Postprocessor<dim>
     {
     public:
       void
-      after_step(const RunContext<dim> &,
-                 const StepRecord &record,
+      after_step(const RunContext<dim> &context,
+                 const StepRecord      &record,
                  const RunStatistics<dim> &) override
       {
-        log_lines.push_back(record.log_line());
+        if (context.parameters.testing.enabled)
+          log_lines.push_back(record.log_line());
+        else if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
+          std::cout << record.log_line() << "  residual " << std::scientific
+                    << std::setprecision(2) << record.newton.final_residual()
+                    << std::defaultfloat << std::endl;
       }
 
       void
       finish(const RunContext<dim>    &context,
              const RunStatistics<dim> &statistics) override
       {
+        if (!context.parameters.testing.enabled)
+          return;
         const auto   points = printed_points(context);
         const double deviation =
           context.parameters.output.analytical_solution ==
@@ -75,7 +84,7 @@ namespace impm
 
     template <int dim>
     std::vector<PointValues>
-    TestSummary<dim>::printed_points(const RunContext<dim> &context) const
+    TerminalOutput<dim>::printed_points(const RunContext<dim> &context) const
     {
       const auto              &testing = context.parameters.testing;
       std::vector<PointValues> local;
@@ -134,9 +143,9 @@ namespace impm
 
     template <int dim>
     void
-    TestSummary<dim>::print_run(const RunContext<dim>    &context,
-                                const RunStatistics<dim> &statistics,
-                                const double column_deviation) const
+    TerminalOutput<dim>::print_run(const RunContext<dim>    &context,
+                                   const RunStatistics<dim> &statistics,
+                                   const double column_deviation) const
     {
       const auto  &parameters = context.parameters;
       const auto  &state      = statistics.final_state;
@@ -240,8 +249,9 @@ namespace impm
 
     template <int dim>
     void
-    TestSummary<dim>::print_points(const RunContext<dim>          &context,
-                                   const std::vector<PointValues> &points) const
+    TerminalOutput<dim>::print_points(
+      const RunContext<dim>          &context,
+      const std::vector<PointValues> &points) const
     {
       const auto  &testing = context.parameters.testing;
       const int    digits  = testing.significant_digits;
@@ -275,7 +285,5 @@ namespace impm
         }
     }
   } // namespace
-  IMPM_REGISTER_POSTPROCESSOR(TestSummary,
-                              "test summary",
-                              context.parameters.testing.enabled)
+  IMPM_REGISTER_POSTPROCESSOR(TerminalOutput, "terminal output", true)
 } // namespace impm

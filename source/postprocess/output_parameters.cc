@@ -1,0 +1,149 @@
+#include <deal.II/base/utilities.h>
+
+#include <impm/core/parameters.h>
+
+#include <algorithm>
+
+// The scene's 'Output' and 'Testing' sections: what the postprocessors write
+// and print.
+namespace impm
+{
+  namespace Parameters
+  {
+    void
+    Output::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Interval",
+                        "1",
+                        Patterns::Integer(0),
+                        "Write the points (.pvtu, and the .pvd series) every "
+                        "this many load steps; 0 writes none. The initial "
+                        "and the last state are always written if > 0.");
+      prm.declare_entry("Analytical solution",
+                        "none",
+                        Patterns::Selection("none|column"),
+                        "Compare with an analytical solution: column is the "
+                        "vertical stress of a column under its own weight, "
+                        "sigma_yy = -rho_0 g (l0 - Y) (the paper's eq. 12), "
+                        "whose error (eq. 13) goes to steps.csv and "
+                        "summary.json.");
+      prm.declare_entry(
+        "Fields",
+        "all",
+        Patterns::MultipleSelection("all|displacement|initial_position|"
+                                    "stress|von_mises_stress|"
+                                    "plastic_multiplier|volume|rank|body"),
+        "Point data written to the point files: all (every field the "
+        "scene's effects produce) or a list of displacement, "
+        "initial_position, stress (all six components), von_mises_stress, "
+        "plastic_multiplier (plastic materials only), volume, rank, body "
+        "(scenes with several bodies only).");
+      prm.leave_subsection();
+    }
+
+    void
+    Output::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      interval            = prm.get_integer("Interval");
+      analytical_solution = static_cast<AnalyticalSolution>(
+        selection_index(analytical_solution_names,
+                        "Output/Analytical solution",
+                        prm.get("Analytical solution")));
+      const auto names  = Utilities::split_string_list(prm.get("Fields"));
+      const auto wanted = [&names](const std::string &field) {
+        for (const auto &name : names)
+          if (name == "all" || name == field)
+            return true;
+        return false;
+      };
+      fields.displacement       = wanted("displacement");
+      fields.initial_position   = wanted("initial_position");
+      fields.stress             = wanted("stress");
+      fields.von_mises_stress   = wanted("von_mises_stress");
+      fields.plastic_multiplier = wanted("plastic_multiplier");
+      fields.volume             = wanted("volume");
+      fields.rank               = wanted("rank");
+      fields.body               = wanted("body");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Testing::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Testing");
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Print a deterministic summary for the test suite "
+                        "(same on any number of processes) instead of "
+                        "progress and timing.");
+      prm.declare_entry("Printed points",
+                        "3",
+                        Patterns::Integer(0),
+                        "Number of points, lowest ids first, whose final "
+                        "state the test summary prints.");
+      prm.declare_entry("Significant digits",
+                        "6",
+                        Patterns::Integer(3, 17),
+                        "Digits of the printed points: significant digits of "
+                        "the position, decimals of the scaled displacement "
+                        "and stresses; few enough for the test suite to "
+                        "ignore round-off, up to 17 to compare two runs to "
+                        "full precision.");
+      prm.declare_entry("Reference length",
+                        "1",
+                        Patterns::Double(1e-300),
+                        "Length L (m) the test summary divides lengths and "
+                        "displacements by, e.g. the cell size: the printed "
+                        "values are then checked to 1e-6 of L.");
+      prm.declare_entry("Reference stress",
+                        "1",
+                        Patterns::Double(1e-300),
+                        "Stress S (Pa) the test summary divides stresses by "
+                        "(reactions by S L^(dim-1)), e.g. rho g l0 of a "
+                        "column or a yield stress: the printed values are "
+                        "then checked to 1e-6 of S.");
+      prm.declare_entry("Reference extent",
+                        "",
+                        Patterns::List(Patterns::Double(), 0, 3),
+                        "If given (one number per dimension), the test "
+                        "summary checks that the upper corner of the final "
+                        "points' bounding box is within 'Reference "
+                        "tolerance' of it: a final state computed another "
+                        "way.");
+      prm.declare_entry("Probes",
+                        "",
+                        Patterns::Anything(),
+                        "Initial positions 'x, y; x, y; ...': the test "
+                        "summary prints the displacement and stress of the "
+                        "point initially nearest to each.");
+      prm.declare_entry("Reference tolerance",
+                        "0",
+                        Patterns::Double(0.),
+                        "Allowed distance (in m, per direction) from "
+                        "'Reference extent'.");
+      prm.leave_subsection();
+    }
+
+    void
+    Testing::parse_parameters(ParameterHandler  &prm,
+                              const unsigned int dimension)
+    {
+      prm.enter_subsection("Testing");
+      enabled            = prm.get_bool("Enabled");
+      n_printed_points   = prm.get_integer("Printed points");
+      significant_digits = prm.get_integer("Significant digits");
+      reference_extent =
+        get_optional_vector(prm, "Testing", "Reference extent", dimension);
+      reference_tolerance = prm.get_double("Reference tolerance");
+      reference_length    = prm.get_double("Reference length");
+      reference_stress    = prm.get_double("Reference stress");
+      probes              = get_point_list(prm, "Testing", "Probes", dimension);
+      prm.leave_subsection();
+    }
+  } // namespace Parameters
+} // namespace impm
