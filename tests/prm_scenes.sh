@@ -15,6 +15,7 @@ for scene in "$scenes"/*.prm; do
   extra=()
   # The collapse on the coarse grid (h = 1 m) keeps the suite fast.
   [ "$name" = collapse ] && extra=(--set "Grid/Number of cells=16, 8")
+  [ "$name" = collapse_3d ] && extra=(--set "Grid/Number of cells=8, 8, 4")
   if ! "$impm" "$scene" "${extra[@]}" --set Testing/Enabled=true \
          --set Output/Interval=0 --set "Output directory=$name" > "$name.txt" 2>&1; then
     echo "FAILED: $name did not complete"; tail -5 "$name.txt"; status=1; continue
