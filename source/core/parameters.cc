@@ -23,21 +23,52 @@ namespace impm
 
 
 
+    namespace
+    {
+      /**
+       * The @p n comma-separated numbers of @p entry, or none if
+       * @p may_be_empty; anything else is an error naming the entry.
+       */
+      std::vector<double>
+      get_numbers(const ParameterHandler &prm,
+                  const std::string      &section,
+                  const std::string      &entry,
+                  const unsigned int      n,
+                  const bool              may_be_empty)
+      {
+        const std::string         value = prm.get(entry);
+        const std::vector<double> numbers =
+          Utilities::string_to_double(Utilities::split_string_list(value));
+        if (numbers.size() != n && !(may_be_empty && numbers.empty()))
+          bad_value(section + "/" + entry,
+                    value,
+                    "it needs " + std::to_string(n) +
+                      " comma-separated numbers" +
+                      (may_be_empty ? ", or none." : " (one per dimension)."));
+        return numbers;
+      }
+    } // namespace
+
+
+
     std::vector<double>
     get_optional_vector(const ParameterHandler &prm,
                         const std::string      &section,
                         const std::string      &entry,
                         const unsigned int      n)
     {
-      const std::string         value = prm.get(entry);
-      const std::vector<double> numbers =
-        Utilities::string_to_double(Utilities::split_string_list(value));
-      if (!numbers.empty() && numbers.size() != n)
-        bad_value(section + "/" + entry,
-                  value,
-                  "it needs " + std::to_string(n) +
-                    " comma-separated numbers, or none.");
-      return numbers;
+      return get_numbers(prm, section, entry, n, true);
+    }
+
+
+
+    std::vector<double>
+    get_vector(const ParameterHandler &prm,
+               const std::string      &section,
+               const std::string      &entry,
+               const unsigned int      n)
+    {
+      return get_numbers(prm, section, entry, n, false);
     }
 
 
@@ -61,25 +92,6 @@ namespace impm
                         std::to_string(n) + " coordinates.");
         }
       return points;
-    }
-
-
-
-    std::vector<double>
-    get_vector(const ParameterHandler &prm,
-               const std::string      &section,
-               const std::string      &entry,
-               const unsigned int      n)
-    {
-      const std::string         value = prm.get(entry);
-      const std::vector<double> numbers =
-        Utilities::string_to_double(Utilities::split_string_list(value));
-      if (numbers.size() != n)
-        bad_value(section + "/" + entry,
-                  value,
-                  "it needs " + std::to_string(n) +
-                    " comma-separated numbers (one per dimension).");
-      return numbers;
     }
 
 

@@ -38,8 +38,8 @@ namespace impm
     total_newton_iterations += record.newton.n_iterations();
     residual_evaluations += record.newton.residuals.size();
     system_dofs_last_step = record.system_dofs;
-    worst_condition =
-      std::max(worst_condition, record.newton.condition_estimate);
+    for (const LinearSolveReport &solve : record.newton.linear_solves)
+      worst_condition = std::max(worst_condition, solve.condition_estimate);
     if (!record.converged())
       {
         ++n_cuts;

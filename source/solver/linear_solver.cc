@@ -64,7 +64,8 @@ namespace impm
         , scene_name(scene_name)
       {}
 
-    protected:
+      /** Public: AutomaticSolver solves through it without a second
+       *  report. */
       void
       try_solve(const LinearSolveRequest &request,
                 LinearSolveReport        &report) override
@@ -97,6 +98,7 @@ namespace impm
                                       std::numeric_limits<double>::infinity();
       }
 
+    protected:
       std::string
       name() const override
       {
@@ -207,9 +209,7 @@ namespace impm
             return;
           }
         choice = "direct";
-        report = direct.solve(request);
-        if (!report.success)
-          throw std::runtime_error(report.failure);
+        direct.try_solve(request, report);
       }
 
       std::string

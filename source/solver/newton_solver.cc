@@ -88,9 +88,6 @@ namespace impm
             record.linear_solves.push_back(
               problem.solve_and_update(linear_tolerance(residual.relative),
                                        estimate));
-            if (estimate)
-              record.condition_estimate =
-                record.linear_solves.back().condition_estimate;
             if (!record.linear_solves.back().success)
               {
                 record.outcome = NewtonOutcome::linear_solve_failed;

@@ -93,8 +93,6 @@ namespace impm
     NewtonOutcome outcome = NewtonOutcome::converged;
     /** Relative residual of each iterate, the start included. */
     std::vector<double> residuals;
-    /** Condition estimate of the first matrix (0 if not estimated). */
-    double condition_estimate = 0.;
     /** The linear solve of each iteration (the last may have failed). */
     std::vector<LinearSolveReport> linear_solves;
 
