@@ -2,8 +2,11 @@
 
 #include <impm/assembly/assembler.h>
 #include <impm/mechanics/equilibrium_forms.h>
+#include <impm/mechanics/point_stiffness.h>
 #include <impm/mechanics/pulled_back_stress.h>
 
+#include <algorithm>
+#include <memory>
 #include <type_traits>
 
 namespace impm
@@ -149,42 +152,42 @@ namespace impm
       void
       add_stiffness(TrilinosWrappers::SparseMatrix &matrix) const override
       {
-        const auto            &point_steps = this->system.point_steps;
-        constexpr unsigned int max_dofs    = PointSupport<dim>::max_nodes * dim;
-        std::vector<double>    local_matrix(max_dofs * max_dofs);
-        std::array<double, max_dofs> row_values;
+        const auto &point_steps = this->system.point_steps;
+        // One support's dense matrix (52 kB in 3D): on the heap.
+        const auto stiffness = std::make_unique<PointStiffness<dim>>();
+        std::array<double, PointStiffness<dim>::max_dofs> row_values;
         for (const AssemblyGroup &group : this->system.assembly_groups)
           {
             // The group's matrix over all its support's DoFs; the rows and
             // columns in the linear system are picked when it is added.
-            const unsigned int n_nodes =
-              point_steps[group.points.front()].support.n_nodes;
-            const unsigned int n_all = n_nodes * dim;
-            std::fill(local_matrix.begin(),
-                      local_matrix.begin() + n_all * n_all,
-                      0.);
+            const bool symmetric = std::all_of(
+              group.points.begin(),
+              group.points.end(),
+              [&](const unsigned int p) {
+                return point_steps[p].material->has_symmetric_tangent();
+              });
+            stiffness->reset(point_steps[group.points.front()].support.n_nodes,
+                             symmetric ? TangentSymmetry::major :
+                                         TangentSymmetry::general);
             for (const unsigned int p : group.points)
               {
                 const PointStep<dim> &step = point_steps[p];
                 const Tensor<1, dim> *gradients =
                   maps_gradients ? mapped_gradients[p].data() :
                                    step.support.gradients.data();
-                add_point_stiffness(
-                  Form::tangent(*step.material,
-                                step.update,
-                                step.deformation_increment_inverse,
-                                step.initial_volume),
-                  gradients,
-                  n_nodes,
-                  group.in_system.data(),
-                  local_matrix.data());
+                stiffness->add(Form::tangent(*step.material,
+                                             step.update,
+                                             step.deformation_increment_inverse,
+                                             step.initial_volume),
+                               gradients,
+                               group.in_system.data());
               }
             const unsigned int n = group.rows.size();
             for (unsigned int a = 0; a < n; ++a)
               {
-                const double *row = &local_matrix[group.local[a] * n_all];
                 for (unsigned int b = 0; b < n; ++b)
-                  row_values[b] = row[group.local[b]];
+                  row_values[b] =
+                    stiffness->entry(group.local[a], group.local[b]);
                 matrix.add(group.rows[a],
                            n,
                            group.rows.data(),

@@ -13,15 +13,27 @@
 // updated Lagrangian / previously converged for one Newton iteration
 // (residual + stiffness).
 //
+// A second table times the point stiffness kernel before and after its
+// rewrite (issue 10): "before" is the node-major kernel of the releases up
+// to the solver split (kept here as the reference, all entries, innermost
+// loop over the d components); "after" is PointStiffness (component-major,
+// vectorised over nodes), with all entries and with the major symmetry the
+// Hencky and von Mises tangents have. Each is timed alone on stored
+// tangents and with the tangent's evaluation (previously converged form),
+// and the largest difference of the after-matrix from the before-matrix is
+// printed relative to its largest entry.
+//
 // Usage: impm-formulation-kernels [points] [trials]
 
 #include <impm/basis/basis_functions.h>
 #include <impm/mechanics/equilibrium_forms.h>
+#include <impm/mechanics/point_stiffness.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -30,6 +42,44 @@ using namespace impm;
 
 namespace
 {
+  /**
+   * The point stiffness kernel before issue 10: node-major matrix
+   * (DoF = node * dim + component), all entries, innermost loop over the
+   * components. The reference for the timings and the differences.
+   */
+  template <int dim>
+  void
+  add_point_stiffness_before(const Tensor<4, dim> &A,
+                             const Tensor<1, dim> *gradients,
+                             const unsigned int    n_nodes,
+                             double               *matrix)
+  {
+    const unsigned int n = n_nodes * dim;
+    for (unsigned int v = 0; v < n_nodes; ++v)
+      {
+        double B[dim][dim][dim] = {};
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int q = 0; q < dim; ++q)
+                B[i][k][q] += gradients[v][j] * A[i][j][k][q];
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            double *row = matrix + (v * dim + i) * n;
+            for (unsigned int w = 0; w < n_nodes; ++w)
+              for (unsigned int k = 0; k < dim; ++k)
+                {
+                  double value = 0.;
+                  for (unsigned int q = 0; q < dim; ++q)
+                    value += B[i][k][q] * gradients[w][q];
+                  row[w * dim + k] += value;
+                }
+          }
+      }
+  }
+
+
+
   /** The synthetic state of one point. */
   template <int dim>
   struct SyntheticPoint
@@ -38,6 +88,7 @@ namespace
     std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes> mapped_gradients;
     Tensor<2, dim>                                           dF_inverse;
     ConstitutiveUpdate                                       update;
+    Tensor<4, dim> tangent; // previously converged, V = 1
   };
 
   /**
@@ -82,7 +133,9 @@ namespace
       const std::string &state,
       const unsigned int n_points,
       const unsigned int trials,
-      std::mt19937      &random)
+      std::mt19937      &random,
+      std::string       &form_table,
+      std::string       &kernel_table)
   {
     // Support: nodes_per_direction_low in the first direction,
     // nodes_per_direction_high in the others.
@@ -112,11 +165,20 @@ namespace
                         symmetrize(Fn * transpose(Fn)),
                         point.update);
         n_plastic += point.update.plastic;
+        point.tangent = PreviouslyConvergedForm<dim>::tangent(material,
+                                                              point.update,
+                                                              point.dF_inverse,
+                                                              1.);
       }
 
     std::vector<double>        forces(n), matrix(n * n);
     std::vector<unsigned char> rows_needed(n, 1);
     double                     checksum = 0.;
+    const auto            stiffness = std::make_unique<PointStiffness<dim>>();
+    const TangentSymmetry symmetry  = material.has_symmetric_tangent() ?
+                                        TangentSymmetry::major :
+                                        TangentSymmetry::general;
+    stiffness->reset(n_nodes, symmetry);
 
     const auto pc_residual = [&](const unsigned int p) {
       const SyntheticPoint<dim> &point = points[p];
@@ -144,40 +206,116 @@ namespace
     };
     const auto pc_stiffness = [&](const unsigned int p) {
       const SyntheticPoint<dim> &point = points[p];
-      add_point_stiffness(PreviouslyConvergedForm<dim>::tangent(
-                            material, point.update, point.dF_inverse, 1.),
-                          point.gradients.data(),
-                          n_nodes,
-                          rows_needed.data(),
-                          matrix.data());
+      stiffness->add(PreviouslyConvergedForm<dim>::tangent(
+                       material, point.update, point.dF_inverse, 1.),
+                     point.gradients.data(),
+                     rows_needed.data());
     };
     const auto ul_stiffness = [&](const unsigned int p) {
       const SyntheticPoint<dim> &point = points[p];
-      add_point_stiffness(UpdatedLagrangianForm<dim>::tangent(
-                            material, point.update, point.dF_inverse, 1.),
-                          point.mapped_gradients.data(),
-                          n_nodes,
-                          rows_needed.data(),
-                          matrix.data());
+      stiffness->add(UpdatedLagrangianForm<dim>::tangent(
+                       material, point.update, point.dF_inverse, 1.),
+                     point.mapped_gradients.data(),
+                     rows_needed.data());
     };
-    const std::vector<double> ns =
-      time_per_point(n_points,
-                     trials,
-                     {pc_residual, ul_residual, pc_stiffness, ul_stiffness});
-    checksum += matrix[n + 1];
+    const auto pc_stiffness_before = [&](const unsigned int p) {
+      const SyntheticPoint<dim> &point = points[p];
+      add_point_stiffness_before(
+        PreviouslyConvergedForm<dim>::tangent(
+          material, point.update, point.dF_inverse, 1.),
+        point.gradients.data(),
+        n_nodes,
+        matrix.data());
+    };
+    const auto kernel_before = [&](const unsigned int p) {
+      add_point_stiffness_before(points[p].tangent,
+                                 points[p].gradients.data(),
+                                 n_nodes,
+                                 matrix.data());
+    };
+    const auto general_stiffness = std::make_unique<PointStiffness<dim>>();
+    general_stiffness->reset(n_nodes, TangentSymmetry::general);
+    const auto kernel_general = [&](const unsigned int p) {
+      general_stiffness->add(points[p].tangent,
+                             points[p].gradients.data(),
+                             rows_needed.data());
+    };
+    const auto symmetric_stiffness = std::make_unique<PointStiffness<dim>>();
+    symmetric_stiffness->reset(n_nodes, TangentSymmetry::major);
+    const auto kernel_symmetric = [&](const unsigned int p) {
+      symmetric_stiffness->add(points[p].tangent,
+                               points[p].gradients.data(),
+                               rows_needed.data());
+    };
+    const std::vector<double> ns = time_per_point(n_points,
+                                                  trials,
+                                                  {pc_residual,
+                                                   ul_residual,
+                                                   pc_stiffness,
+                                                   ul_stiffness,
+                                                   pc_stiffness_before,
+                                                   kernel_before,
+                                                   kernel_general,
+                                                   kernel_symmetric});
 
-    std::printf("| %u | %u | %s (%u%% plastic) | %.0f | %.0f | %.0f | %.0f | "
-                "%.3f |%s\n",
-                dim,
-                n_nodes,
-                state.c_str(),
-                100 * n_plastic / n_points,
-                ns[0],
-                ns[1],
-                ns[2],
-                ns[3],
-                (ns[1] + ns[3]) / (ns[0] + ns[2]),
-                std::isfinite(checksum) ? "" : " (non-finite checksum)");
+    // The same sum over the points by each kernel: the after-matrices
+    // against the before-matrix.
+    std::fill(matrix.begin(), matrix.end(), 0.);
+    general_stiffness->reset(n_nodes, TangentSymmetry::general);
+    symmetric_stiffness->reset(n_nodes, TangentSymmetry::major);
+    for (unsigned int p = 0; p < n_points; ++p)
+      {
+        kernel_before(p);
+        kernel_general(p);
+        kernel_symmetric(p);
+      }
+    double largest = 0., difference = 0.;
+    for (unsigned int a = 0; a < n; ++a)
+      for (unsigned int b = 0; b < n; ++b)
+        {
+          const double before = matrix[a * n + b];
+          largest             = std::max(largest, std::abs(before));
+          difference =
+            std::max({difference,
+                      std::abs(general_stiffness->entry(a, b) - before),
+                      symmetry == TangentSymmetry::major ?
+                        std::abs(symmetric_stiffness->entry(a, b) - before) :
+                        0.});
+        }
+    checksum += stiffness->entry(1, n - 1);
+
+    char line[512];
+    std::snprintf(line,
+                  sizeof(line),
+                  "| %u | %u | %s (%u%% plastic) | %.0f | %.0f | %.0f | %.0f | "
+                  "%.3f |%s\n",
+                  dim,
+                  n_nodes,
+                  state.c_str(),
+                  100 * n_plastic / n_points,
+                  ns[0],
+                  ns[1],
+                  ns[2],
+                  ns[3],
+                  (ns[1] + ns[3]) / (ns[0] + ns[2]),
+                  std::isfinite(checksum) ? "" : " (non-finite checksum)");
+    form_table += line;
+    std::snprintf(line,
+                  sizeof(line),
+                  "| %u | %u | %s | %.0f | %.0f | %.0f | %.2f | %.0f | %.0f | "
+                  "%.2f | %.1e |\n",
+                  dim,
+                  n_nodes,
+                  state.c_str(),
+                  ns[5],
+                  ns[6],
+                  ns[7],
+                  ns[5] / (symmetry == TangentSymmetry::major ? ns[7] : ns[6]),
+                  ns[4],
+                  ns[2],
+                  ns[4] / ns[2],
+                  difference / largest);
+    kernel_table += line;
   }
 } // namespace
 
@@ -197,23 +335,69 @@ main(int argc, char **argv)
               "previously converged (PC) and updated Lagrangian (UL) forms\n\n",
               trials,
               n_points);
+  std::string form_table, kernel_table;
+  for (const auto &[low, high] :
+       std::vector<std::pair<unsigned int, unsigned int>>{{2, 2},
+                                                          {2, 3},
+                                                          {3, 3}})
+    {
+      run<2>(low,
+             high,
+             elastic,
+             0.02,
+             "elastic",
+             n_points,
+             trials,
+             random,
+             form_table,
+             kernel_table);
+      run<2>(low,
+             high,
+             plastic,
+             0.2,
+             "plastic",
+             n_points,
+             trials,
+             random,
+             form_table,
+             kernel_table);
+    }
+  for (const auto &[low, high] :
+       std::vector<std::pair<unsigned int, unsigned int>>{{2, 2},
+                                                          {2, 3},
+                                                          {3, 3}})
+    {
+      run<3>(low,
+             high,
+             elastic,
+             0.02,
+             "elastic",
+             n_points,
+             trials,
+             random,
+             form_table,
+             kernel_table);
+      run<3>(low,
+             high,
+             plastic,
+             0.2,
+             "plastic",
+             n_points,
+             trials,
+             random,
+             form_table,
+             kernel_table);
+    }
   std::printf("| dim | support nodes | state | PC residual | UL residual | "
               "PC stiffness | UL stiffness | UL/PC per iteration |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
-  for (const auto &[low, high] :
-       std::vector<std::pair<unsigned int, unsigned int>>{{2, 2},
-                                                          {2, 3},
-                                                          {3, 3}})
-    {
-      run<2>(low, high, elastic, 0.02, "elastic", n_points, trials, random);
-      run<2>(low, high, plastic, 0.2, "plastic", n_points, trials, random);
-    }
-  for (const auto &[low, high] :
-       std::vector<std::pair<unsigned int, unsigned int>>{{2, 2},
-                                                          {2, 3},
-                                                          {3, 3}})
-    {
-      run<3>(low, high, elastic, 0.02, "elastic", n_points, trials, random);
-      run<3>(low, high, plastic, 0.2, "plastic", n_points, trials, random);
-    }
+  std::printf("|---|---|---|---|---|---|---|---|\n%s\n", form_table.c_str());
+  std::printf("The point stiffness kernel, before and after (ns per point; "
+              "\"kernel\" on stored tangents, \"with tangent\" including the "
+              "previously converged tangent's evaluation)\n\n");
+  std::printf("| dim | support nodes | state | kernel before | after, all "
+              "entries | after, symmetric | kernel before/after | with tangent "
+              "before | with tangent after | before/after | largest "
+              "difference |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n%s",
+              kernel_table.c_str());
 }

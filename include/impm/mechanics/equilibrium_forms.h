@@ -142,51 +142,6 @@ namespace impm
       }
   }
 
-  /**
-   * @brief Add one point's stiffness,
-   * @f$K_{(v,i)(w,k)} += \nabla S_{v,j} A_{ijkq} \nabla S_{w,q}@f$, to the
-   * dense row-major matrix @p matrix of all its support's DoFs (size
-   * n x n, n = @p n_nodes * dim, DoF = node * dim + component). Rows whose
-   * @p rows_needed entry is zero (constrained DoFs) are skipped.
-   *
-   * The loops run node block by node block with the innermost over
-   * contiguous columns; the flops, @f$n_{nodes}\,d^4 + n_{nodes}^2 d^3@f$,
-   * are those of the contraction.
-   */
-  template <int dim>
-  inline void
-  add_point_stiffness(const Tensor<4, dim> &A,
-                      const Tensor<1, dim> *gradients,
-                      const unsigned int    n_nodes,
-                      const unsigned char  *rows_needed,
-                      double               *matrix)
-  {
-    const unsigned int n = n_nodes * dim;
-    for (unsigned int v = 0; v < n_nodes; ++v)
-      {
-        // B[i][k][q] = grad_v[j] A[i][j][k][q]
-        double B[dim][dim][dim] = {};
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            for (unsigned int k = 0; k < dim; ++k)
-              for (unsigned int q = 0; q < dim; ++q)
-                B[i][k][q] += gradients[v][j] * A[i][j][k][q];
-        for (unsigned int i = 0; i < dim; ++i)
-          {
-            if (!rows_needed[v * dim + i])
-              continue;
-            double *row = matrix + (v * dim + i) * n;
-            for (unsigned int w = 0; w < n_nodes; ++w)
-              for (unsigned int k = 0; k < dim; ++k)
-                {
-                  double value = 0.;
-                  for (unsigned int q = 0; q < dim; ++q)
-                    value += B[i][k][q] * gradients[w][q];
-                  row[w * dim + k] += value;
-                }
-          }
-      }
-  }
 } // namespace impm
 
 #endif

@@ -112,6 +112,20 @@ namespace impm
     is_plastic() const = 0;
 
     /**
+     * @brief Whether the tangent has major symmetry,
+     * @f$A_{ijkq} = A_{kqij}@f$, in every state: true for a model whose
+     * stress update derives from a potential (hyperelasticity, associated
+     * plasticity with the exponential-map return), which lets the assembly
+     * compute half of each point stiffness (PointStiffness). The default,
+     * false, is always safe.
+     */
+    virtual bool
+    has_symmetric_tangent() const
+    {
+      return false;
+    }
+
+    /**
      * @brief A one-line description of the model and its parameters.
      */
     virtual std::string
@@ -169,6 +183,18 @@ namespace impm
 
     bool
     is_plastic() const override;
+
+    /**
+     * @brief True: Hencky elasticity derives from a stored energy and the
+     * radial return of von Mises plasticity is a closest-point projection
+     * in the energy norm, so the algorithmic tangent is symmetric (Simo
+     * 1992; checked by tests/point_stiffness.cc).
+     */
+    bool
+    has_symmetric_tangent() const override
+    {
+      return true;
+    }
 
     std::string
     description() const override;
