@@ -161,8 +161,8 @@ namespace impm
     }
     TimerOutput::Scope scope(timer, "system setup");
     system.setup(material_points, ghost_stabilisation.get());
-    if (linear_solver->needs_constant_modes())
-      linear_solver->set_constant_modes(system.component_masks());
+    if (linear_solver->needs_near_null_space())
+      linear_solver->set_near_null_space(system.rigid_body_modes());
   }
 
 

@@ -188,6 +188,7 @@ namespace impm
   {
     dofs_of_node.clear();
     component_of_local_dof.assign(n_local_dofs(), 0);
+    position_of_local_dof.resize(n_local_dofs());
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
@@ -202,6 +203,7 @@ namespace impm
                 partitioner->global_to_local(cell_dofs[i]);
               dofs_of_node[node][component] = local;
               component_of_local_dof[local] = component;
+              position_of_local_dof[local]  = cell->vertex(vertex);
             }
         }
   }

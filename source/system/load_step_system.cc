@@ -239,17 +239,62 @@ namespace impm
 
 
   template <int dim>
-  std::vector<std::vector<bool>>
-  LoadStepSystem<dim>::component_masks() const
+  NearNullSpace
+  LoadStepSystem<dim>::rigid_body_modes() const
   {
-    std::vector<std::vector<bool>> masks(dim,
-                                         std::vector<bool>(owned.n_elements()));
-    const types::global_dof_index  first =
+    const types::global_dof_index first =
       owned.n_elements() > 0 ? owned.nth_index_in_set(0) : 0;
+    // The rows of this process: component and node position.
+    std::vector<std::pair<unsigned int, Point<dim>>> rows(owned.n_elements());
+    std::vector<double> lowest(dim, std::numeric_limits<double>::max());
+    std::vector<double> highest(dim, std::numeric_limits<double>::lowest());
     for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
       if (index_in_system[i] != numbers::invalid_dof_index)
-        masks[grid.component(i)][index_in_system[i] - first] = true;
-    return masks;
+        {
+          const Point<dim> &position       = grid.position(i);
+          rows[index_in_system[i] - first] = {grid.component(i), position};
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lowest[d]  = std::min(lowest[d], position[d]);
+              highest[d] = std::max(highest[d], position[d]);
+            }
+        }
+    Utilities::MPI::min(lowest, communicator, lowest);
+    Utilities::MPI::max(highest, communicator, highest);
+    Point<dim> centre;
+    double     extent = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        centre[d] = 0.5 * (lowest[d] + highest[d]);
+        extent    = std::max(extent, highest[d] - lowest[d]);
+      }
+    const double scale = extent > 0. ? 2. / extent : 1.;
+
+    constexpr unsigned int n_rotations = dim == 2 ? 1 : 3;
+    NearNullSpace          modes;
+    modes.n_modes = dim + n_rotations;
+    modes.n_rows  = rows.size();
+    modes.values.assign(modes.n_modes * modes.n_rows, 0.);
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        const auto &[component, position] = rows[r];
+        const Tensor<1, dim> x            = (position - centre) * scale;
+        modes.values[component * modes.n_rows + r] = 1.;
+        // Rotation about axis a: (e_a x x)[component]; in 2D about z.
+        if constexpr (dim == 2)
+          modes.values[dim * modes.n_rows + r] = component == 0 ? -x[1] : x[0];
+        else
+          for (unsigned int a = 0; a < 3; ++a)
+            {
+              const unsigned int b = (a + 1) % 3, c = (a + 2) % 3;
+              // (e_a x x) = x[b] e_c - x[c] e_b
+              const double value = component == c ? x[b] :
+                                   component == b ? -x[c] :
+                                                    0.;
+              modes.values[(dim + a) * modes.n_rows + r] = value;
+            }
+      }
+    return modes;
   }
 
 

@@ -127,6 +127,13 @@ namespace impm
       return component_of_local_dof[local];
     }
 
+    /** @brief The position of the grid node of the local DoF @p local. */
+    const Point<dim> &
+    position(const unsigned int local) const
+    {
+      return position_of_local_dof[local];
+    }
+
     /** @brief The DoFs this process owns. */
     const IndexSet &
     locally_owned_dofs() const
@@ -249,6 +256,8 @@ namespace impm
     /** Local indices (owned and ghost) of each grid node's DoFs. */
     /** The component of each local DoF. */
     std::vector<unsigned char> component_of_local_dof;
+    /** The position of each local DoF's grid node. */
+    std::vector<Point<dim>> position_of_local_dof;
     std::unordered_map<std::uint64_t, std::array<unsigned int, dim>>
       dofs_of_node;
     /** Prescribed DoFs (local index) and their displacement at full load. */

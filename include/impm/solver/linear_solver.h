@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <impm/core/parameters.h>
+#include <impm/solver/near_null_space.h>
 
 #include <memory>
 #include <string>
@@ -79,22 +80,22 @@ namespace impm
 
     /**
      * @brief Whether the solver uses the near null space of the system
-     * (see set_constant_modes()).
+     * (see set_near_null_space()).
      */
     virtual bool
-    needs_constant_modes() const
+    needs_near_null_space() const
     {
       return false;
     }
 
     /**
-     * @brief The translations of the current system, for each component a
-     * mask of this process's rows (see LoadStepSystem::component_masks()).
+     * @brief The rigid-body modes of the current system
+     * (LoadStepSystem::rigid_body_modes()).
      */
     virtual void
-    set_constant_modes(std::vector<std::vector<bool>> masks)
+    set_near_null_space(NearNullSpace modes)
     {
-      (void)masks;
+      (void)modes;
     }
 
     /** @brief Solve the system of @p request. */

@@ -9,6 +9,7 @@
 
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
+#include <impm/solver/near_null_space.h>
 #include <impm/system/point_step.h>
 
 #include <vector>
@@ -106,12 +107,14 @@ namespace impm
     norm_in_system(const NodalVector &vector) const;
 
     /**
-     * @brief For each displacement component, which of this process's rows
-     * of the system belong to it: the translations, the near null space an
-     * algebraic multigrid needs for elasticity.
+     * @brief The rigid-body modes on this process's rows of the system: the
+     * near null space an algebraic multigrid needs for elasticity. The
+     * rotations are taken about the centre of the system's nodes and
+     * scaled by their extent, so that all modes are of order one.
+     * Collective.
      */
-    std::vector<std::vector<bool>>
-    component_masks() const;
+    NearNullSpace
+    rigid_body_modes() const;
 
     /**
      * @brief Set the right-hand side to @p external - @p internal on the
