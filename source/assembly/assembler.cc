@@ -5,6 +5,8 @@
 #include <impm/mechanics/point_stiffness.h>
 #include <impm/mechanics/pulled_back_stress.h>
 
+#include <Epetra_CrsMatrix.h>
+
 #include <algorithm>
 #include <memory>
 #include <type_traits>
@@ -182,19 +184,84 @@ namespace impm
                                gradients,
                                group.in_system.data());
               }
-            const unsigned int n = group.rows.size();
-            for (unsigned int a = 0; a < n; ++a)
+            add_to_matrix(group, *stiffness, matrix, row_values);
+          }
+      }
+
+    private:
+      /**
+       * Add the group's rows and columns of @p stiffness to @p matrix. Rows
+       * this process owns are added in place: the group's columns, sorted
+       * by their local index, are found by one merge walk along the
+       * matrix's sorted row (instead of a binary search and a global-to-
+       * local lookup per entry, which cost 40 % of the 3D collapse's run
+       * time). Rows of other processes go through the matrix's add().
+       */
+      static void
+      add_to_matrix(
+        const AssemblyGroup                               &group,
+        const PointStiffness<dim>                         &stiffness,
+        TrilinosWrappers::SparseMatrix                    &matrix,
+        std::array<double, PointStiffness<dim>::max_dofs> &row_values)
+      {
+        // The values are changed through the row views of the (const)
+        // matrix deal.II exposes.
+        const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
+        const unsigned int      n      = group.rows.size();
+        // The group's columns in the matrix's local numbering, sorted.
+        std::array<std::pair<int, unsigned int>, PointStiffness<dim>::max_dofs>
+          columns;
+        for (unsigned int b = 0; b < n; ++b)
+          columns[b] = {epetra.LCID(static_cast<int>(group.rows[b])), b};
+        std::sort(columns.begin(), columns.begin() + n);
+        std::array<int, PointStiffness<dim>::max_dofs> positions;
+        bool                                           have_positions   = false;
+        int                                            positions_length = 0;
+        for (unsigned int a = 0; a < n; ++a)
+          {
+            const int local_row = epetra.LRID(static_cast<int>(group.rows[a]));
+            if (local_row < 0)
               {
                 for (unsigned int b = 0; b < n; ++b)
                   row_values[b] =
-                    stiffness->entry(group.local[a], group.local[b]);
+                    stiffness.entry(group.local[a], group.local[b]);
                 matrix.add(group.rows[a],
                            n,
                            group.rows.data(),
                            row_values.data(),
                            /*elide_zero_values=*/false,
                            /*col_indices_are_sorted=*/true);
+                continue;
               }
+            int     length  = 0;
+            double *values  = nullptr;
+            int    *indices = nullptr;
+            epetra.ExtractMyRowView(local_row, length, values, indices);
+            // The rows of one node's components have the same columns:
+            // the previous row's positions are tried first.
+            bool known = have_positions && length == positions_length;
+            for (unsigned int c = 0; c < n && known; ++c)
+              known = indices[positions[c]] == columns[c].first;
+            if (!known)
+              {
+                int position = 0;
+                for (unsigned int c = 0; c < n; ++c)
+                  {
+                    while (position < length &&
+                           indices[position] < columns[c].first)
+                      ++position;
+                    Assert(position < length &&
+                             indices[position] == columns[c].first,
+                           ExcInternalError());
+                    positions[c] = position;
+                  }
+                have_positions   = true;
+                positions_length = length;
+              }
+            const unsigned int row = group.local[a];
+            for (unsigned int c = 0; c < n; ++c)
+              values[positions[c]] +=
+                stiffness.entry(row, group.local[columns[c].second]);
           }
       }
 

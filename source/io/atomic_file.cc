@@ -20,9 +20,16 @@ namespace impm
       if (!out)
         throw std::runtime_error("Writing the file " + path + " failed.");
     }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0)
-      throw std::runtime_error("Cannot rename " + temporary + " to " + path +
-                               ".");
+    rename_or_throw(temporary, path);
+  }
+
+
+
+  void
+  rename_or_throw(const std::string &from, const std::string &to)
+  {
+    if (std::rename(from.c_str(), to.c_str()) != 0)
+      throw std::runtime_error("Cannot rename " + from + " to " + to + ".");
   }
 
 

@@ -9,11 +9,13 @@
 namespace impm
 {
   template <int dim>
-  PointOutput<dim>::PointOutput(const std::string &directory,
-                                const std::string &base_name,
-                                const MPI_Comm     communicator)
+  PointOutput<dim>::PointOutput(const std::string                &directory,
+                                const std::string                &base_name,
+                                const Parameters::PointFileFormat format,
+                                const MPI_Comm                    communicator)
     : directory(directory)
     , base_name(base_name)
+    , format(format)
     , communicator(communicator)
   {}
 
@@ -55,10 +57,52 @@ namespace impm
   void
   PointOutput<dim>::write(const double time, const unsigned int step)
   {
+    const std::string stem =
+      base_name + "_" + Utilities::int_to_string(step, 5);
+    if (format == Parameters::PointFileFormat::hdf5)
+      write_hdf5_files(time, stem);
+    else
+      write_vtu_files(time, stem);
+  }
+
+
+
+  template <int dim>
+  void
+  PointOutput<dim>::write_hdf5_files(const double time, const std::string &stem)
+  {
+    // All processes write their points into one file under a temporary
+    // name; rank 0 renames it when all are done, then rewrites the series.
+    // The file holds the nodes, a Polyvertex topology and one data set per
+    // field (vector fields as one data set of dim components).
+    const std::string          file      = stem + ".h5";
+    const std::string          temporary = directory + "/" + file + ".tmp";
+    DataOutBase::DataOutFilter filter(
+      DataOutBase::DataOutFilterFlags(/*filter_duplicate_vertices=*/false,
+                                      /*xdmf_hdf5_output=*/true));
+    this->write_filtered_data(filter);
+    this->write_hdf5_parallel(filter, temporary, communicator);
+    // The entry names the file as the series will find it.
+    xdmf_entries.push_back(
+      this->create_xdmf_entry(filter, file, time, communicator));
+    MPI_Barrier(communicator);
+    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
+    if (root)
+      rename_or_throw(temporary, directory + "/" + file);
+    const std::string series_file = directory + "/" + base_name + ".xdmf";
+    this->write_xdmf_file(xdmf_entries, series_file + ".tmp", communicator);
+    if (root)
+      rename_or_throw(series_file + ".tmp", series_file);
+  }
+
+
+
+  template <int dim>
+  void
+  PointOutput<dim>::write_vtu_files(const double time, const std::string &stem)
+  {
     const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
-    const std::string  stem =
-      base_name + "_" + Utilities::int_to_string(step, 5);
 
     // Each process with points writes its piece under a temporary name,
     // then renames it; a process without points writes none (an empty piece

@@ -17,9 +17,19 @@ namespace impm
       prm.declare_entry("Interval",
                         "1",
                         Patterns::Integer(0),
-                        "Write the points (.pvtu, and the .pvd series) every "
+                        "Write the points (in the Format below) every "
                         "this many load steps; 0 writes none. The initial "
                         "and the last state are always written if > 0.");
+      prm.declare_entry(
+        "Format",
+        "vtu",
+        Patterns::Selection("vtu|hdf5"),
+        "The point files' format, both read by ParaView: vtu (one .vtu piece "
+        "per process, a .pvtu record per output step, the points.pvd "
+        "series) or hdf5 (one .h5 file per output step written by all "
+        "processes together, the points.xdmf series; for large runs: one "
+        "file per step whatever the number of processes; deal.II 9.4 "
+        "stores the fields in single precision, the positions in double).");
       prm.declare_entry("Analytical solution",
                         "none",
                         Patterns::Selection("none|column"),
@@ -47,6 +57,8 @@ namespace impm
     {
       prm.enter_subsection("Output");
       interval            = prm.get_integer("Interval");
+      format              = static_cast<PointFileFormat>(selection_index(
+        point_file_format_names, "Output/Format", prm.get("Format")));
       analytical_solution = static_cast<AnalyticalSolution>(
         selection_index(analytical_solution_names,
                         "Output/Analytical solution",

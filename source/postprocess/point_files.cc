@@ -24,6 +24,7 @@ namespace impm
       explicit PointFiles(const RunContext<dim> &context)
         : output(context.parameters.scene.output_directory,
                  "points",
+                 context.parameters.output.format,
                  context.communicator)
       {
         const auto &fields = context.parameters.output.fields;

@@ -158,6 +158,21 @@ namespace impm
     constexpr std::array<const char *, 2> analytical_solution_names = {
       {"none", "column"}};
 
+    /** @brief The file format of the point output. */
+    enum class PointFileFormat
+    {
+      /** One `.vtu` piece per process, a `.pvtu` record per output step and
+       *  a `.pvd` series. */
+      vtu,
+      /** One `.h5` file per output step, written by all processes together
+       *  (parallel HDF5), and an `.xdmf` series that describes them. */
+      hdf5
+    };
+
+    /** @brief The names of PointFileFormat in the scene. */
+    constexpr std::array<const char *, 2> point_file_format_names = {
+      {"vtu", "hdf5"}};
+
     /**
      * @brief The index in @p names of @p value: for parsing a selection
      * once into its enum. A value not in the list (which the entry's
@@ -312,6 +327,8 @@ namespace impm
     {
       /** Write point files every this many load steps (0: never). */
       unsigned int interval;
+      /** The point files' format. */
+      PointFileFormat format;
       /** Compare with this analytical solution. */
       AnalyticalSolution analytical_solution;
       /** @brief The fields written to the point files. */

@@ -20,6 +20,14 @@ namespace impm
                         const std::function<void(std::ostream &)> &write);
 
   /**
+   * @brief Rename @p from to @p to (the last step of a file written under
+   * a temporary name by another writer); a failure is an error naming
+   * both.
+   */
+  void
+  rename_or_throw(const std::string &from, const std::string &to);
+
+  /**
    * @brief As above, for content already held in a string.
    */
   void

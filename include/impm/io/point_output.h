@@ -5,6 +5,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
+#include <impm/core/parameters.h>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,8 +16,10 @@ namespace impm
   using namespace dealii;
 
   /**
-   * @brief Writes material points with their fields as `.vtu` pieces, a
-   * `.pvtu` record per output step and a `.pvd` time series for ParaView.
+   * @brief Writes material points with their fields for ParaView: as `.vtu`
+   * pieces, a `.pvtu` record per output step and a `.pvd` time series, or
+   * as one `.h5` file per output step (parallel HDF5, all processes into
+   * one file) and an `.xdmf` time series.
    *
    * The caller adds the points of this process and the fields to write;
    * only what is added is computed and written. Every file is written under
@@ -32,11 +36,13 @@ namespace impm
      * @brief Constructor.
      * @param directory Output directory (must exist).
      * @param base_name File names start with this.
+     * @param format The file format.
      * @param communicator The processes that write together.
      */
-    PointOutput(const std::string &directory,
-                const std::string &base_name,
-                const MPI_Comm     communicator);
+    PointOutput(const std::string                &directory,
+                const std::string                &base_name,
+                const Parameters::PointFileFormat format,
+                const MPI_Comm                    communicator);
 
     /**
      * @brief Start a new output step with @p n_points points on this process
@@ -81,13 +87,25 @@ namespace impm
                  DataComponentInterpretation::DataComponentInterpretation>>
     get_nonscalar_data_ranges() const override;
 
-    const std::string                           directory;
-    const std::string                           base_name;
-    const MPI_Comm                              communicator;
-    std::vector<DataOutBase::Patch<0, dim>>     patches;
-    std::vector<std::string>                    names;
-    std::vector<bool>                           is_vector;
+    /** @brief write() for the vtu format. */
+    void
+    write_vtu_files(const double time, const std::string &stem);
+
+    /** @brief write() for the hdf5 format. */
+    void
+    write_hdf5_files(const double time, const std::string &stem);
+
+    const std::string                       directory;
+    const std::string                       base_name;
+    const Parameters::PointFileFormat       format;
+    const MPI_Comm                          communicator;
+    std::vector<DataOutBase::Patch<0, dim>> patches;
+    std::vector<std::string>                names;
+    std::vector<bool>                       is_vector;
+    /** The vtu series: load factor and record. */
     std::vector<std::pair<double, std::string>> series;
+    /** The hdf5 series. */
+    std::vector<XDMFEntry> xdmf_entries;
   };
 } // namespace impm
 
