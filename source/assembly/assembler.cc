@@ -250,9 +250,14 @@ namespace impm
                     while (position < length &&
                            indices[position] < columns[c].first)
                       ++position;
-                    Assert(position < length &&
-                             indices[position] == columns[c].first,
-                           ExcInternalError());
+                    // Checked in release builds too: an entry missing from
+                    // the sparsity pattern must not become a write past
+                    // the row.
+                    AssertThrow(position < length &&
+                                  indices[position] == columns[c].first,
+                                ExcMessage("The stiffness of a material point "
+                                           "has an entry outside the "
+                                           "system's sparsity pattern."));
                     positions[c] = position;
                   }
                 have_positions   = true;

@@ -36,6 +36,8 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 using namespace impm;
@@ -336,58 +338,32 @@ main(int argc, char **argv)
               trials,
               n_points);
   std::string form_table, kernel_table;
-  for (const auto &[low, high] :
-       std::vector<std::pair<unsigned int, unsigned int>>{{2, 2},
-                                                          {2, 3},
-                                                          {3, 3}})
-    {
-      run<2>(low,
-             high,
-             elastic,
-             0.02,
-             "elastic",
-             n_points,
-             trials,
-             random,
-             form_table,
-             kernel_table);
-      run<2>(low,
-             high,
-             plastic,
-             0.2,
-             "plastic",
-             n_points,
-             trials,
-             random,
-             form_table,
-             kernel_table);
-    }
-  for (const auto &[low, high] :
-       std::vector<std::pair<unsigned int, unsigned int>>{{2, 2},
-                                                          {2, 3},
-                                                          {3, 3}})
-    {
-      run<3>(low,
-             high,
-             elastic,
-             0.02,
-             "elastic",
-             n_points,
-             trials,
-             random,
-             form_table,
-             kernel_table);
-      run<3>(low,
-             high,
-             plastic,
-             0.2,
-             "plastic",
-             n_points,
-             trials,
-             random,
-             form_table,
-             kernel_table);
-    }
+  // Supports of low x high (x high) nodes, each with an elastic and a
+  // plastic state, in 2D and then in 3D.
+  const auto run_all = [&](auto dimension) {
+    constexpr int dim = decltype(dimension)::value;
+    for (const auto &[low, high] :
+         std::vector<std::pair<unsigned int, unsigned int>>{{2, 2},
+                                                            {2, 3},
+                                                            {3, 3}})
+      for (const auto &[material, strain, state] :
+           {std::tuple<const Material &, double, const char *>{elastic,
+                                                               0.02,
+                                                               "elastic"},
+            {plastic, 0.2, "plastic"}})
+        run<dim>(low,
+                 high,
+                 material,
+                 strain,
+                 state,
+                 n_points,
+                 trials,
+                 random,
+                 form_table,
+                 kernel_table);
+  };
+  run_all(std::integral_constant<int, 2>());
+  run_all(std::integral_constant<int, 3>());
   std::printf("| dim | support nodes | state | PC residual | UL residual | "
               "PC stiffness | UL stiffness | UL/PC per iteration |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n%s\n", form_table.c_str());
