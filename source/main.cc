@@ -5,10 +5,14 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/errors.h>
 #include <impm/core/default_scene.h>
 #include <impm/core/parameters.h>
 #include <impm/core/run.h>
+#include <impm/io/scene_input.h>
 
+#include <csignal>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -26,46 +30,18 @@ namespace
     "  --set \"Subsection/Entry=value\"  override one entry of the scene\n"
     "                                  (repeatable), e.g.\n"
     "                                  --set \"Grid/Number of cells=1, 64\"\n"
+    "  --overwrite                     replace the run of another scene in\n"
+    "                                  the output directory (its files are\n"
+    "                                  removed first)\n"
+    "  --verbose                       on an error, print deal.II's full\n"
+    "                                  report (source file, condition)\n"
+    "                                  after the one-line message\n"
     "  --print-parameters              print every parameter with its\n"
     "                                  default and documentation, and exit\n"
     "  --help                          print this text and exit\n"
     "\n"
     "Run in parallel with: mpirun -np N impm SCENE.prm\n";
 
-  /**
-   * Apply "A/B/Entry=value" to @p prm, naming the override on error.
-   */
-  void
-  apply_override(dealii::ParameterHandler &prm, const std::string &assignment)
-  {
-    const auto equals = assignment.find('=');
-    if (equals == std::string::npos)
-      throw std::runtime_error("--set '" + assignment +
-                               "': expected \"Subsection/Entry=value\".");
-    const std::string        path  = assignment.substr(0, equals);
-    const std::string        value = assignment.substr(equals + 1);
-    std::vector<std::string> parts;
-    std::string::size_type   start = 0, slash;
-    while ((slash = path.find('/', start)) != std::string::npos)
-      {
-        parts.push_back(path.substr(start, slash - start));
-        start = slash + 1;
-      }
-    const std::string entry = path.substr(start);
-    for (const auto &section : parts)
-      prm.enter_subsection(section);
-    try
-      {
-        prm.set(entry, value);
-      }
-    catch (const std::exception &e)
-      {
-        throw std::runtime_error("--set '" + assignment +
-                                 "': " + std::string(e.what()));
-      }
-    for (unsigned int i = 0; i < parts.size(); ++i)
-      prm.leave_subsection();
-  }
 } // namespace
 
 int
@@ -74,8 +50,15 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // Errors are reported by their message; a user needs no stack trace.
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
-  const bool is_root =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const unsigned int rank =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  const bool is_root = rank == 0;
+  // A file-size limit (ulimit -f) makes a write fail with an error the
+  // program reports, instead of killing it with SIGXFSZ.
+  std::signal(SIGXFSZ, SIG_IGN);
+  bool verbose = false;
+  for (int i = 1; i < argc; ++i)
+    verbose = verbose || std::string(argv[i]) == "--verbose";
   try
     {
       std::string              scene_file;
@@ -90,23 +73,27 @@ main(int argc, char **argv)
                 std::cout << usage;
               return 0;
             }
+          else if (argument == "--verbose")
+            continue;
+          else if (argument == "--overwrite")
+            overrides.push_back("Existing output=overwrite");
           else if (argument == "--print-parameters")
             print_parameters = true;
           else if (argument == "--set")
             {
               if (i + 1 >= argc)
-                throw std::runtime_error("--set needs an argument "
-                                         "\"Subsection/Entry=value\".");
+                throw impm::InputError("--set needs an argument "
+                                       "\"Subsection/Entry=value\".");
               overrides.push_back(argv[++i]);
             }
           else if (argument.rfind("--", 0) == 0)
-            throw std::runtime_error("Unknown option '" + argument +
-                                     "'; see impm --help.");
+            throw impm::InputError("Unknown option '" + argument +
+                                   "'; see impm --help.");
           else if (scene_file.empty())
             scene_file = argument;
           else
-            throw std::runtime_error("Only one scene file may be given; got '" +
-                                     scene_file + "' and '" + argument + "'.");
+            throw impm::InputError("Only one scene file may be given; got '" +
+                                   scene_file + "' and '" + argument + "'.");
         }
 
       dealii::ParameterHandler prm;
@@ -118,22 +105,45 @@ main(int argc, char **argv)
           return 0;
         }
       if (scene_file.empty())
-        prm.parse_input_from_string(impm::default_scene, "default scene");
+        impm::SceneInput::parse_text(prm, impm::default_scene, "default scene");
       else
-        prm.parse_input(scene_file);
+        impm::SceneInput::parse_file(prm, scene_file);
       for (const auto &assignment : overrides)
-        apply_override(prm, assignment);
+        impm::SceneInput::apply_override(prm, assignment);
 
+      const std::string scene_identity =
+        scene_file.empty() ?
+          std::string("default scene") :
+          std::filesystem::absolute(scene_file).lexically_normal().string();
       if (prm.get_integer("Dimension") == 2)
-        impm::run_scene<2>(prm, MPI_COMM_WORLD);
+        impm::run_scene<2>(prm, scene_identity, MPI_COMM_WORLD);
       else
-        impm::run_scene<3>(prm, MPI_COMM_WORLD);
+        impm::run_scene<3>(prm, scene_identity, MPI_COMM_WORLD);
     }
   catch (const std::exception &exception)
     {
-      if (is_root)
-        std::cerr << "\nError: " << exception.what() << std::endl;
+      // An error all processes raise together is printed once; one raised
+      // by this process alone stops the others, which may be waiting for
+      // it in a collective operation.
+      const bool collective =
+        dynamic_cast<const impm::CollectiveError *>(&exception) != nullptr ||
+        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1;
+      if (collective && !is_root)
+        return 1;
+      std::cerr << "Error: "
+                << (collective ? "" : "process " + std::to_string(rank) + ": ")
+                << impm::one_line_message(exception) << std::endl;
+      if (verbose)
+        std::cerr << impm::full_message(exception) << std::endl;
+      if (!collective)
+        MPI_Abort(MPI_COMM_WORLD, 1);
       return 1;
+    }
+  catch (...)
+    {
+      std::cerr << "Error: process " << rank << ": unknown exception."
+                << std::endl;
+      MPI_Abort(MPI_COMM_WORLD, 1);
     }
   return 0;
 }

@@ -21,7 +21,7 @@ compare() {
   numdiff -q -a 1e-6 -r 1e-8 -s ' \t\n=,:;<>[](){}^' "$1" "$2" > /dev/null ||
     { diff "$1" "$2"; fail "$3"; }
 }
-run() { "${launcher[@]}" "$impm" "$tests/$1.prm" > "$1.txt" 2> /dev/null || fail "$1 did not run"; }
+run() { "${launcher[@]}" "$impm" "$tests/$1.prm" --overwrite > "$1.txt" 2> /dev/null || fail "$1 did not run"; }
 
 run column_updated_lagrangian
 run column_gimp_plastic_16

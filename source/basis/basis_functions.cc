@@ -1,3 +1,4 @@
+#include <impm/base/errors.h>
 #include <impm/basis/basis_functions.h>
 
 #include <stdexcept>
@@ -18,7 +19,7 @@ namespace impm
     for (unsigned int b = 0; b < names.size(); ++b)
       if (name == names[b])
         return static_cast<BasisType>(b);
-    throw std::invalid_argument("Parameter 'Material points/Basis' = '" + name +
+    throw InputError("Parameter 'Material points/Basis' = '" + name +
                                 "' is not allowed: allowed: "
                                 "standard MPM|GIMP.");
   }

@@ -3,6 +3,8 @@
 #include <impm/core/body.h>
 #include <impm/core/parameters.h>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -121,6 +123,7 @@ namespace impm
           Parameters::bad_value(name + "/Vertices",
                                 prm.get("Vertices"),
                                 "a polygon needs at least three vertices.");
+        check_polygon(prm.get("Vertices"));
       }
     points_per_direction = prm.get_integer("Points per cell direction");
     density              = prm.get_double("Density");
@@ -128,6 +131,137 @@ namespace impm
     material = MaterialRegistry::create(prm);
     prm.leave_subsection();
     prm.leave_subsection();
+  }
+
+
+
+  namespace
+  {
+    /** Twice the signed area of the triangle a, b, c (2D). */
+    template <int dim>
+    double
+    orientation(const Point<dim> &a, const Point<dim> &b, const Point<dim> &c)
+    {
+      return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    }
+
+    /** Whether the closed segments a-b and c-d share a point (2D). */
+    template <int dim>
+    bool
+    segments_meet(const Point<dim> &a,
+                  const Point<dim> &b,
+                  const Point<dim> &c,
+                  const Point<dim> &d)
+    {
+      const double o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+      const double o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+      if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) &&
+          ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+        return true;
+      // Collinear touching.
+      const auto on_segment =
+        [](const Point<dim> &p, const Point<dim> &q, const Point<dim> &r) {
+          return std::min(p[0], q[0]) <= r[0] && r[0] <= std::max(p[0], q[0]) &&
+                 std::min(p[1], q[1]) <= r[1] && r[1] <= std::max(p[1], q[1]);
+        };
+      return (o1 == 0 && on_segment(a, b, c)) ||
+             (o2 == 0 && on_segment(a, b, d)) ||
+             (o3 == 0 && on_segment(c, d, a)) ||
+             (o4 == 0 && on_segment(c, d, b));
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Body<dim>::check_polygon(const std::string &value) const
+  {
+    const unsigned int n = vertices.size();
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        {
+          // Edges i and j are neighbours if they share a vertex.
+          if (j == i + 1 || (i == 0 && j == n - 1))
+            {
+              if (vertices[i].distance(vertices[j]) == 0.)
+                Parameters::bad_value(name + "/Vertices",
+                                      value,
+                                      "vertices " + std::to_string(i + 1) +
+                                        " and " + std::to_string(j + 1) +
+                                        " coincide.");
+              continue;
+            }
+          if (segments_meet(vertices[i],
+                            vertices[(i + 1) % n],
+                            vertices[j],
+                            vertices[(j + 1) % n]))
+            Parameters::bad_value(name + "/Vertices",
+                                  value,
+                                  "the polygon's edges " +
+                                    std::to_string(i + 1) + " and " +
+                                    std::to_string(j + 1) +
+                                    " cross (give the vertices in order "
+                                    "around the boundary).");
+        }
+    if (volume() == 0.)
+      Parameters::bad_value(name + "/Vertices",
+                            value,
+                            "the polygon has no area.");
+  }
+
+
+
+  template <int dim>
+  std::pair<Point<dim>, Point<dim>>
+  Body<dim>::bounding_box() const
+  {
+    if (shape == Shape::box)
+      return {lower_corner, upper_corner};
+    Point<dim> lower, upper;
+    if (shape == Shape::disc || shape == Shape::sphere)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = center[d] - radius;
+          upper[d] = center[d] + radius;
+        }
+    else
+      {
+        lower = upper = vertices[0];
+        for (const auto &vertex : vertices)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = std::min(lower[d], vertex[d]);
+              upper[d] = std::max(upper[d], vertex[d]);
+            }
+      }
+    return {lower, upper};
+  }
+
+
+
+  template <int dim>
+  double
+  Body<dim>::volume() const
+  {
+    if (shape == Shape::box)
+      {
+        double product = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          product *= upper_corner[d] - lower_corner[d];
+        return product;
+      }
+    if (shape == Shape::disc)
+      return numbers::PI * radius * radius;
+    if (shape == Shape::sphere)
+      return 4. / 3. * numbers::PI * radius * radius * radius;
+    double twice_area = 0.;
+    for (unsigned int i = 0; i < vertices.size(); ++i)
+      {
+        const auto &a = vertices[i], &b = vertices[(i + 1) % vertices.size()];
+        twice_area += a[0] * b[1] - b[0] * a[1];
+      }
+    return std::abs(twice_area) / 2.;
   }
 
 

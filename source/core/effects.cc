@@ -1,10 +1,12 @@
 #include <deal.II/base/mpi.templates.h>
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/errors.h>
 #include <impm/base/names.h>
 #include <impm/core/effects.h>
 #include <impm/core/parameters.h>
 
+#include <algorithm>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -174,12 +176,23 @@ namespace impm
       void
       initialize(const std::vector<MaterialPointInfo<dim>> &points,
                  const std::vector<Body<dim>> &,
-                 const CartesianGrid<dim> &,
-                 const MPI_Comm communicator) override
+                 const CartesianGrid<dim> &grid,
+                 const MPI_Comm            communicator) override
       {
         loaded_ids.clear();
+        double largest_cell = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          largest_cell = std::max(largest_cell, grid.cell_size[d]);
         for (const auto &position : positions)
           {
+            if (!grid.contains(position))
+              {
+                std::ostringstream message;
+                message << "'Point load/Positions': (" << position
+                        << ") lies outside the grid [" << grid.lower << "] - ["
+                        << grid.upper << "].";
+                throw InputError(message.str());
+              }
             std::pair<double, std::uint64_t> nearest(
               std::numeric_limits<double>::max(), 0);
             for (const auto &point : points)
@@ -188,8 +201,18 @@ namespace impm
                                                   position),
                                                 point.id));
             const auto all = Utilities::MPI::all_gather(communicator, nearest);
-            loaded_ids.push_back(
-              std::min_element(all.begin(), all.end())->second);
+            const auto closest = *std::min_element(all.begin(), all.end());
+            if (closest.first > largest_cell)
+              {
+                std::ostringstream message;
+                message << "'Point load/Positions': (" << position << ") is "
+                        << closest.first
+                        << " m from the nearest material point; a load must "
+                           "act within one cell ("
+                        << largest_cell << " m) of the material.";
+                throw InputError(message.str());
+              }
+            loaded_ids.push_back(closest.second);
           }
       }
 
@@ -299,7 +322,7 @@ namespace impm
                  const MPI_Comm communicator) override
       {
         if (body >= bodies.size())
-          throw std::invalid_argument(
+          throw InputError(
             "Parameter 'Traction/Body' = " + std::to_string(body + 1) +
             " is not allowed: the scene has " + std::to_string(bodies.size()) +
             " bodies.");
@@ -341,10 +364,10 @@ namespace impm
           areas.insert(part.begin(), part.end());
         n_points = areas.size();
         if (n_points == 0)
-          throw std::invalid_argument(
-            "Traction: no material point of Body " + std::to_string(body + 1) +
-            " lies on its " + Names::face(boundary) + " boundary" +
-            (has_region ? " inside the region" : "") + ".");
+          throw InputError("Traction: no material point of Body " +
+                           std::to_string(body + 1) + " lies on its " +
+                           Names::face(boundary) + " boundary" +
+                           (has_region ? " inside the region" : "") + ".");
         total_area = n_points * area;
       }
 

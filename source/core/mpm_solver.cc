@@ -2,6 +2,8 @@
 
 #include <impm/core/mpm_solver.h>
 #include <impm/core/run.h>
+#include <impm/core/scene_checks.h>
+#include <impm/io/output_directory.h>
 
 #include <filesystem>
 
@@ -89,9 +91,13 @@ namespace impm
   void
   MPMSolver<dim>::start_run()
   {
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      std::filesystem::create_directories(parameters.scene.output_directory);
-    MPI_Barrier(communicator);
+    OutputDirectory::prepare(parameters.scene.output_directory,
+                             parameters.scene.name,
+                             parameters.scene.file,
+                             parameters.scene.overwrite_existing_output ?
+                               OutputDirectory::ExistingRun::overwrite :
+                               OutputDirectory::ExistingRun::refuse,
+                             communicator);
 
     if (!force_effects.empty())
       {
@@ -232,10 +238,14 @@ namespace impm
 
   template <int dim>
   void
-  run_scene(ParameterHandler &prm, const MPI_Comm communicator)
+  run_scene(ParameterHandler  &prm,
+            const std::string &scene_file,
+            const MPI_Comm     communicator)
   {
     Parameters::All<dim> parameters;
     parameters.parse_parameters(prm);
+    parameters.scene.file = scene_file;
+    SceneChecks::check(parameters, communicator);
     MPMSolver<dim> solver(parameters,
                           EffectRegistry::create_enabled<dim>(prm),
                           communicator);
@@ -247,7 +257,7 @@ namespace impm
   template class MPMSolver<2>;
   template class MPMSolver<3>;
   template void
-  run_scene<2>(ParameterHandler &, const MPI_Comm);
+  run_scene<2>(ParameterHandler &, const std::string &, const MPI_Comm);
   template void
-  run_scene<3>(ParameterHandler &, const MPI_Comm);
+  run_scene<3>(ParameterHandler &, const std::string &, const MPI_Comm);
 } // namespace impm

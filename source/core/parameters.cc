@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/errors.h>
 #include <impm/base/names.h>
 #include <impm/core/effects.h>
 #include <impm/core/parameters.h>
@@ -17,8 +18,8 @@ namespace impm
               const std::string &value,
               const std::string &allowed)
     {
-      throw std::invalid_argument("Parameter '" + entry + "' = '" + value +
-                                  "' is not allowed: " + allowed);
+      throw InputError("Parameter '" + entry + "' = '" + value +
+                       "' is not allowed: " + allowed);
     }
 
 
@@ -111,15 +112,27 @@ namespace impm
                         "output",
                         Patterns::DirectoryName(),
                         "Directory for all output (created if missing), "
-                        "relative to the working directory.");
+                        "relative to the working directory. It holds one "
+                        "run: the files of an earlier run of the same scene "
+                        "(same name and scene file) are removed at the "
+                        "start, and a directory that holds another "
+                        "scene's run is refused (see 'Existing output').");
+      prm.declare_entry("Existing output",
+                        "refuse",
+                        Patterns::Selection("refuse|overwrite"),
+                        "What to do when 'Output directory' holds the run "
+                        "of another scene: refuse (stop with an error "
+                        "naming it) or overwrite (remove its files first; "
+                        "the command-line flag --overwrite sets this).");
     }
 
     void
     Scene::parse_parameters(const ParameterHandler &prm)
     {
-      name             = prm.get("Scene name");
-      dimension        = prm.get_integer("Dimension");
-      output_directory = prm.get("Output directory");
+      name                      = prm.get("Scene name");
+      dimension                 = prm.get_integer("Dimension");
+      output_directory          = prm.get("Output directory");
+      overwrite_existing_output = prm.get("Existing output") == "overwrite";
       if (output_directory.empty())
         bad_value("Output directory", "", "it must not be empty.");
     }

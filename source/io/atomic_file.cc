@@ -1,25 +1,45 @@
 #include <impm/io/atomic_file.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
 namespace impm
 {
+  std::string
+  system_reason()
+  {
+    return errno == 0 ? std::string() :
+                        std::string(" (") + std::strerror(errno) + ")";
+  }
+
+
+
   void
   write_file_atomically(const std::string                         &path,
                         const std::function<void(std::ostream &)> &write)
   {
     const std::string temporary = path + ".tmp";
+    std::string       failure;
     {
+      errno = 0;
       std::ofstream out(temporary);
       if (!out)
-        throw std::runtime_error("Cannot write the file " + path + ".");
+        throw std::runtime_error("Cannot write the file " + path +
+                                 system_reason() + ".");
       write(out);
       out.flush();
       if (!out)
-        throw std::runtime_error("Writing the file " + path + " failed.");
+        failure = "Writing the file " + path + " failed" + system_reason() +
+                  "; the previous version, if any, is kept.";
     }
+    if (!failure.empty())
+      {
+        std::remove(temporary.c_str());
+        throw std::runtime_error(failure);
+      }
     rename_or_throw(temporary, path);
   }
 
@@ -28,8 +48,10 @@ namespace impm
   void
   rename_or_throw(const std::string &from, const std::string &to)
   {
+    errno = 0;
     if (std::rename(from.c_str(), to.c_str()) != 0)
-      throw std::runtime_error("Cannot rename " + from + " to " + to + ".");
+      throw std::runtime_error("Cannot rename " + from + " to " + to +
+                               system_reason() + ".");
   }
 
 

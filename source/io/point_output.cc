@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/errors.h>
 #include <impm/io/atomic_file.h>
 #include <impm/io/point_output.h>
 
@@ -85,14 +86,17 @@ namespace impm
     // The entry names the file as the series will find it.
     xdmf_entries.push_back(
       this->create_xdmf_entry(filter, file, time, communicator));
-    MPI_Barrier(communicator);
     const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
-    if (root)
-      rename_or_throw(temporary, directory + "/" + file);
+    run_collectively(communicator, [&]() {
+      if (root)
+        rename_or_throw(temporary, directory + "/" + file);
+    });
     const std::string series_file = directory + "/" + base_name + ".xdmf";
     this->write_xdmf_file(xdmf_entries, series_file + ".tmp", communicator);
-    if (root)
-      rename_or_throw(series_file + ".tmp", series_file);
+    run_collectively(communicator, [&]() {
+      if (root)
+        rename_or_throw(series_file + ".tmp", series_file);
+    });
   }
 
 
@@ -113,31 +117,36 @@ namespace impm
                              0);
     const std::string piece =
       stem + "." + Utilities::int_to_string(rank, 4) + ".vtu";
-    if (!patches.empty())
-      write_file_atomically(directory + "/" + piece, [this](std::ostream &out) {
-        this->write_vtu(out);
-      });
-    // All pieces exist before the records that name them.
-    MPI_Barrier(communicator);
-
-    if (rank == 0)
-      {
-        std::vector<std::string> pieces;
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          if (counts[r] > 0)
-            pieces.push_back(stem + "." + Utilities::int_to_string(r, 4) +
-                             ".vtu");
-        write_file_atomically(directory + "/" + stem + ".pvtu",
-                              [&](std::ostream &out) {
-                                this->write_pvtu_record(out, pieces);
+    // All pieces exist before the records that name them; a process that
+    // cannot write its piece stops all.
+    run_collectively(communicator, [&]() {
+      if (!patches.empty())
+        write_file_atomically(directory + "/" + piece,
+                              [this](std::ostream &out) {
+                                this->write_vtu(out);
                               });
+    });
 
-        series.emplace_back(time, stem + ".pvtu");
-        write_file_atomically(directory + "/" + base_name + ".pvd",
-                              [&](std::ostream &out) {
-                                DataOutBase::write_pvd_record(out, series);
-                              });
-      }
+    run_collectively(communicator, [&]() {
+      if (rank == 0)
+        {
+          std::vector<std::string> pieces;
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            if (counts[r] > 0)
+              pieces.push_back(stem + "." + Utilities::int_to_string(r, 4) +
+                               ".vtu");
+          write_file_atomically(directory + "/" + stem + ".pvtu",
+                                [&](std::ostream &out) {
+                                  this->write_pvtu_record(out, pieces);
+                                });
+
+          series.emplace_back(time, stem + ".pvtu");
+          write_file_atomically(directory + "/" + base_name + ".pvd",
+                                [&](std::ostream &out) {
+                                  DataOutBase::write_pvd_record(out, series);
+                                });
+        }
+    });
   }
 
 

@@ -1,3 +1,4 @@
+#include <impm/base/errors.h>
 #include <impm/mechanics/material.h>
 
 #include <cmath>
@@ -290,7 +291,7 @@ namespace impm
       const double E  = prm.get_double("Young's modulus");
       const double nu = prm.get_double("Poisson's ratio");
       if (!(E > 0.))
-        throw std::invalid_argument("Parameter 'Young's modulus' = '" +
+        throw InputError("Parameter 'Young's modulus' = '" +
                                     prm.get("Young's modulus") +
                                     "' is not allowed: it must be > 0.");
       return {E, nu};
@@ -322,7 +323,7 @@ namespace impm
          const auto [E, nu]        = parse_elastic_constants(prm);
          const double yield_stress = prm.get_double("Yield stress");
          if (!(yield_stress > 0.))
-           throw std::invalid_argument("Parameter 'Yield stress' = '" +
+           throw InputError("Parameter 'Yield stress' = '" +
                                        prm.get("Yield stress") +
                                        "' is not allowed: it must be > 0.");
          return std::make_unique<HenckyVonMises>(E, nu, yield_stress);

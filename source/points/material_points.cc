@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <impm/base/errors.h>
 #include <impm/mechanics/pulled_back_stress.h>
 #include <impm/points/material_points.h>
 
@@ -51,7 +52,9 @@ namespace impm
 
     // Ids from the structured cell index, the body and the position in the
     // cell: the same on any number of processes.
-    constexpr unsigned int max_per_cell = dim == 2 ? 100 : 1000;
+    constexpr unsigned int    max_per_cell = dim == 2 ? 100 : 1000;
+    std::vector<unsigned int> points_of_body(bodies.size(), 0);
+    std::string               overlap;
     for (const auto &cell :
          background.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -65,7 +68,6 @@ namespace impm
               cell_index           = cell_index * grid.n_cells[d] + i;
               cell_lower[d]        = grid.node_coordinate(d, i);
             }
-          std::vector<Point<dim>> placed;
           for (unsigned int b = 0; b < bodies.size(); ++b)
             {
               const auto        &body       = bodies[b];
@@ -96,16 +98,22 @@ namespace impm
                       position[d] =
                         cell_lower[d] + reference[d] * grid.cell_size[d];
                     }
-                  // A position inside two bodies belongs to the first.
-                  if (!body.contains(position) ||
-                      std::any_of(placed.begin(),
-                                  placed.end(),
-                                  [&](const Point<dim> &other) {
-                                    return other.distance(position) <
-                                           1e-12 * grid.cell_size[0];
-                                  }))
+                  if (!body.contains(position))
                     continue;
-                  placed.push_back(position);
+                  ++points_of_body[b];
+                  for (unsigned int other = 0;
+                       other < bodies.size() && overlap.empty();
+                       ++other)
+                    if (other != b && bodies[other].contains(position))
+                      {
+                        std::ostringstream message;
+                        message << bodies[std::min(b, other)].name << " and "
+                                << bodies[std::max(b, other)].name
+                                << " overlap (both contain (" << position
+                                << ")): bodies may touch but not share "
+                                   "volume, or their mass would count twice.";
+                        overlap = message.str();
+                      }
                   for (unsigned int d = 0; d < dim; ++d)
                     properties[P::initial_position + d] = position[d];
                   particle_handler.insert_particle(
@@ -117,13 +125,23 @@ namespace impm
                 }
             }
         }
+    throw_if_any_failed(overlap, communicator);
+    Utilities::MPI::sum(points_of_body, communicator, points_of_body);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (points_of_body[b] == 0)
+        throw InputError(
+          bodies[b].description() +
+          ": the body holds no material point: none of its " +
+          std::to_string(bodies[b].points_per_direction) +
+          " point positions per cell direction lies inside it; enlarge it "
+          "or raise its 'Points per cell direction'.");
     particle_handler.update_cached_numbers();
     double mass = 0.;
     for (const auto &point : particle_handler)
       mass += PointState<dim>(point.get_properties()).mass();
     mass_at_creation = Utilities::MPI::sum(mass, communicator);
     if (particle_handler.n_global_particles() == 0)
-      throw std::invalid_argument(
+      throw InputError(
         "The bodies contain no material points: no point position of the "
         "grid's cells lies inside them.");
   }
@@ -246,14 +264,14 @@ namespace impm
     const auto messages = Utilities::MPI::all_gather(communicator, left_grid);
     for (const auto &message : messages)
       if (!message.empty())
-        throw std::runtime_error(message);
+        throw CollectiveError(message);
 
     const auto n_before = particle_handler.n_global_particles();
     particle_handler.sort_particles_into_subdomains_and_cells();
     if (particle_handler.n_global_particles() != n_before)
-      throw std::runtime_error("Material points were lost while sorting them "
-                               "into cells in load step " +
-                               std::to_string(load_step) + ".");
+      throw CollectiveError("Material points were lost while sorting them "
+                            "into cells in load step " +
+                            std::to_string(load_step) + ".");
   }
 
 
@@ -359,7 +377,7 @@ namespace impm
     const auto n_before = n_global_points();
     particle_handler.unpack_after_coarsening_and_refinement();
     if (particle_handler.n_global_particles() != n_before)
-      throw std::runtime_error(
+      throw CollectiveError(
         "Material points were lost while repartitioning the grid.");
   }
 

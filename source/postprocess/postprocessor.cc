@@ -1,3 +1,4 @@
+#include <impm/base/errors.h>
 #include <impm/postprocess/postprocessor.h>
 
 #include <algorithm>
@@ -109,7 +110,8 @@ namespace impm
   PostprocessorManager<dim>::start()
   {
     for (const auto &postprocessor : postprocessors)
-      postprocessor->start(context);
+      run_collectively(context.communicator,
+                       [&]() { postprocessor->start(context); });
   }
 
 
@@ -122,8 +124,12 @@ namespace impm
       for (const auto &postprocessor : postprocessors)
         postprocessor->measure_step(context, record);
     statistics.add(record);
+    // A process that fails to write stops all of them (never a hang in
+    // the next collective operation).
     for (const auto &postprocessor : postprocessors)
-      postprocessor->after_step(context, record, statistics);
+      run_collectively(context.communicator, [&]() {
+        postprocessor->after_step(context, record, statistics);
+      });
   }
 
 
@@ -135,7 +141,8 @@ namespace impm
     statistics.wall_time   = wall_time;
     statistics.final_state = context.material_points.measure();
     for (const auto &postprocessor : postprocessors)
-      postprocessor->finish(context, statistics);
+      run_collectively(context.communicator,
+                       [&]() { postprocessor->finish(context, statistics); });
   }
 
 

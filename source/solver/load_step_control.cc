@@ -1,3 +1,4 @@
+#include <impm/base/errors.h>
 #include <impm/solver/load_step_control.h>
 
 #include <algorithm>
@@ -58,11 +59,11 @@ namespace impm
             << load_factor << " to " << next << "): Newton "
             << record.outcome_description() << '.';
     if (!parameters.step_control)
-      throw std::runtime_error(message.str() +
+      throw CollectiveError(message.str() +
                                " Relative residuals:" + failures.str());
     step_size /= 2.;
     if (step_size < parameters.minimum_step)
-      throw std::runtime_error(
+      throw CollectiveError(
         message.str() +
         " The load increment would fall below 'Solver/Minimum load step' = " +
         std::to_string(parameters.minimum_step) +

@@ -9,6 +9,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impm
@@ -53,6 +54,19 @@ namespace impm
     contains(const Point<dim> &x) const;
 
     /**
+     * @brief The smallest box holding the body's shape: its lower and upper
+     * corner.
+     */
+    std::pair<Point<dim>, Point<dim>>
+    bounding_box() const;
+
+    /**
+     * @brief The volume (area in 2D) of the body's shape.
+     */
+    double
+    volume() const;
+
+    /**
      * @brief A one-line description for the start-up report and summary.
      */
     std::string
@@ -93,6 +107,15 @@ namespace impm
     double density = 0.;
     /** The body's constitutive model. */
     std::shared_ptr<Material> material;
+
+  private:
+    /**
+     * @brief Refuse a polygon whose edges cross or touch other than at
+     * shared vertices, or that has no area (@p value: the entry, for the
+     * message).
+     */
+    void
+    check_polygon(const std::string &value) const;
   };
 } // namespace impm
 

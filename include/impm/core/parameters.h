@@ -203,6 +203,11 @@ namespace impm
       unsigned int dimension;
       /** Directory for all output files; created if missing. */
       std::string output_directory;
+      /** Whether a directory holding another scene's run is replaced. */
+      bool overwrite_existing_output = false;
+      /** The scene file (absolute path), or "default scene"; set by
+       *  run_scene(), not read from the scene. */
+      std::string file;
 
       /** @brief Declare the entries (top level). */
       static void

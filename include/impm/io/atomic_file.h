@@ -28,6 +28,13 @@ namespace impm
   rename_or_throw(const std::string &from, const std::string &to);
 
   /**
+   * @brief " (the system's reason)" for the last failed system call (from
+   * errno), or "" if none is recorded.
+   */
+  std::string
+  system_reason();
+
+  /**
    * @brief As above, for content already held in a string.
    */
   void

@@ -2,48 +2,50 @@
 #define impm_io_log_file_h
 
 #include <fstream>
-#include <stdexcept>
+#include <sstream>
 #include <string>
 
 namespace impm
 {
   /**
    * @brief A file that grows by whole lines during a run (steps.csv,
-   * newton.csv): opened empty, flushed after each load step, and every
-   * write checked. A failed open or write is an error naming the file.
+   * newton.csv). What a load step writes is collected in memory and
+   * appended at flush(), which checks the write; if it fails (a full disk,
+   * a file-size limit), the file is cut back to the lines of the last
+   * complete flush, so that it never ends in half a line, and the failure is
+   * an error naming the file and the cause.
    */
   class LogFile
   {
   public:
     /** @brief Create (or empty) the file @p path. */
     void
-    open(const std::string &path)
-    {
-      file_path = path;
-      file.open(path);
-      if (!file)
-        throw std::runtime_error("Cannot write the file " + path + ".");
-    }
+    open(const std::string &path);
 
-    /** @brief The stream to write lines to. */
+    /** @brief The stream the next lines go to (held until flush()). */
     std::ostream &
     stream()
     {
-      return file;
+      return pending;
     }
 
-    /** @brief Flush what was written and check that it reached the file. */
+    /** @brief Append the pending lines and check that they reached the
+     * file. */
     void
-    flush()
+    flush();
+
+    /** @brief The size in bytes of the complete lines in the file. */
+    std::streamoff
+    size() const
     {
-      file.flush();
-      if (!file)
-        throw std::runtime_error("Writing the file " + file_path + " failed.");
+      return complete_size;
     }
 
   private:
-    std::string   file_path;
-    std::ofstream file;
+    std::string        file_path;
+    std::ofstream      file;
+    std::ostringstream pending;
+    std::streamoff     complete_size = 0;
   };
 } // namespace impm
 

@@ -1,0 +1,58 @@
+#ifndef impm_core_scene_checks_h
+#define impm_core_scene_checks_h
+
+#include <deal.II/base/mpi.h>
+
+#include <impm/core/parameters.h>
+
+namespace impm
+{
+  /**
+   * @brief The checks of a scene that no single entry can make, done when
+   * the scene has been read and before anything is built. Each failure is
+   * an InputError naming the entries involved.
+   *
+   * Checked here: every body lies inside the grid; every region of a face
+   * condition holds a node of its face; every displacement component is
+   * held by some face condition near the material (else the system is
+   * singular); the memory the scene needs fits in the memory of the
+   * machines the run has. Checked where the information is: overlapping
+   * bodies and bodies without points when the points are seeded
+   * (MaterialPoints), polygons when they are read (Body), loads off the
+   * material when the effects start (ForceEffect::initialize).
+   */
+  namespace SceneChecks
+  {
+    /**
+     * @brief Run the checks on @p parameters (collectively on the
+     * processes of @p communicator, which share the memory check).
+     */
+    template <int dim>
+    void
+    check(const Parameters::All<dim> &parameters, const MPI_Comm communicator);
+
+    /**
+     * @brief The estimated peak memory of a run, in bytes, with the
+     * counts behind it.
+     */
+    struct MemoryEstimate
+    {
+      /** Grid cells. */
+      double n_cells = 0.;
+      /** Material points (from the bodies' volumes). */
+      double n_points = 0.;
+      /** Bytes. */
+      double bytes = 0.;
+    };
+
+    /**
+     * @brief The memory a scene needs: per cell and per point costs
+     * measured on this project's runs (doc/benchmarks/scaling.md).
+     */
+    template <int dim>
+    MemoryEstimate
+    estimate_memory(const Parameters::All<dim> &parameters);
+  } // namespace SceneChecks
+} // namespace impm
+
+#endif

@@ -1,0 +1,92 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <impm/base/errors.h>
+
+#include <new>
+#include <sstream>
+
+namespace impm
+{
+  void
+  throw_if_any_failed(const std::string &local_error,
+                      const MPI_Comm     communicator,
+                      const bool         name_process)
+  {
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_ranks =
+      dealii::Utilities::MPI::n_mpi_processes(communicator);
+    // The lowest failed rank, or n_ranks if none failed.
+    const unsigned int first_failed =
+      dealii::Utilities::MPI::min(local_error.empty() ? n_ranks : rank,
+                                  communicator);
+    if (first_failed == n_ranks)
+      return;
+    int length =
+      rank == first_failed ? static_cast<int>(local_error.size()) : 0;
+    MPI_Bcast(&length, 1, MPI_INT, first_failed, communicator);
+    std::string message =
+      rank == first_failed ? local_error : std::string(length, ' ');
+    MPI_Bcast(message.data(), length, MPI_CHAR, first_failed, communicator);
+    if (n_ranks > 1 && name_process)
+      message = "process " + std::to_string(first_failed) + ": " + message;
+    throw CollectiveError(message);
+  }
+
+
+
+  namespace
+  {
+    /** @p text with every run of white space replaced by one blank. */
+    std::string
+    collapse_white_space(const std::string &text)
+    {
+      std::string result;
+      bool        blank = false;
+      for (const char c : text)
+        if (c == ' ' || c == '\n' || c == '\t' || c == '\r')
+          blank = !result.empty();
+        else
+          {
+            if (blank)
+              result += ' ';
+            result += c;
+            blank = false;
+          }
+      return result;
+    }
+  } // namespace
+
+
+
+  std::string
+  one_line_message(const std::exception &exception)
+  {
+    if (dynamic_cast<const std::bad_alloc *>(&exception) != nullptr)
+      return "Out of memory (a memory allocation failed).";
+    if (const auto *deal_ii_exception =
+          dynamic_cast<const dealii::ExceptionBase *>(&exception))
+      {
+        std::ostringstream info;
+        deal_ii_exception->print_info(info);
+        std::string message = collapse_white_space(info.str());
+        if (message.empty())
+          message = collapse_white_space(deal_ii_exception->get_exc_name());
+        return "Internal error: " + message +
+               " (run with --verbose for the full report)";
+      }
+    // IMPM's own messages are written for the user (a failed load step
+    // lists its attempts on the lines after the first).
+    const std::string message = exception.what();
+    return message.empty() ? "unnamed error" : message;
+  }
+
+
+
+  std::string
+  full_message(const std::exception &exception)
+  {
+    return exception.what();
+  }
+} // namespace impm

@@ -1,0 +1,289 @@
+#include <deal.II/base/utilities.h>
+
+#include <impm/base/errors.h>
+#include <impm/base/names.h>
+#include <impm/core/scene_checks.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace impm
+{
+  namespace SceneChecks
+  {
+    namespace
+    {
+      template <int dim>
+      std::string
+      box_string(const Point<dim> &lower, const Point<dim> &upper)
+      {
+        std::ostringstream out;
+        out << "[" << lower << "] - [" << upper << "]";
+        return out.str();
+      }
+
+      /** A length scale for comparisons: the grid's largest extent. */
+      template <int dim>
+      double
+      grid_extent(const Parameters::Grid<dim> &grid)
+      {
+        double extent = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          extent =
+            std::max(extent, grid.upper_corner[d] - grid.lower_corner[d]);
+        return extent;
+      }
+
+      template <int dim>
+      double
+      cell_size(const Parameters::Grid<dim> &grid, const unsigned int d)
+      {
+        return (grid.upper_corner[d] - grid.lower_corner[d]) / grid.n_cells[d];
+      }
+
+      template <int dim>
+      void
+      check_bodies_inside(const Parameters::All<dim> &parameters)
+      {
+        const auto  &grid      = parameters.grid;
+        const double tolerance = 1e-12 * grid_extent(grid);
+        for (const auto &body : parameters.bodies)
+          {
+            const auto box = body.bounding_box();
+            for (unsigned int d = 0; d < dim; ++d)
+              if (box.first[d] < grid.lower_corner[d] - tolerance ||
+                  box.second[d] > grid.upper_corner[d] + tolerance)
+                throw InputError(
+                  body.name + " (" + box_string(box.first, box.second) +
+                  ") reaches outside the grid " +
+                  box_string(grid.lower_corner, grid.upper_corner) + " in " +
+                  Names::axis(d) +
+                  ": a body must lie inside 'Grid/Lower corner' and "
+                  "'Grid/Upper corner'.");
+          }
+      }
+
+      /**
+       * Whether the region of face @p face holds a node of the face.
+       */
+      template <int dim>
+      bool
+      region_holds_a_node(const Parameters::Grid<dim> &grid,
+                          const unsigned int           face)
+      {
+        const auto        &region    = grid.face_regions[face];
+        const unsigned int axis      = face / 2;
+        const double       tolerance = 1e-10 * grid_extent(grid);
+        const double       plane =
+          face % 2 == 0 ? grid.lower_corner[axis] : grid.upper_corner[axis];
+        if (plane < region.first[axis] - tolerance ||
+            plane > region.second[axis] + tolerance)
+          return false;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (d != axis)
+            {
+              const double h = cell_size(grid, d);
+              // The first node at or above the region's lower bound.
+              const double first = std::ceil(
+                (region.first[d] - grid.lower_corner[d] - tolerance) / h);
+              const double node =
+                grid.lower_corner[d] + std::max(0., first) * h;
+              if (first > grid.n_cells[d] ||
+                  node > region.second[d] + tolerance)
+                return false;
+            }
+        return true;
+      }
+
+      template <int dim>
+      void
+      check_face_regions(const Parameters::Grid<dim> &grid)
+      {
+        for (unsigned int f = 0; f < 2 * dim; ++f)
+          if (grid.face_has_region[f] &&
+              grid.face_conditions[f] != Parameters::FaceCondition::none &&
+              !region_holds_a_node(grid, f))
+            throw InputError(
+              "'Grid/Region " + Names::face(f) + "' = " +
+              box_string(grid.face_regions[f].first,
+                         grid.face_regions[f].second) +
+              " holds no node of the grid face " + Names::face(f) +
+              ", so 'Grid/Condition " + Names::face(f) +
+              "' would hold nothing: the region must contain the face's "
+              "plane and at least one of its nodes.");
+      }
+
+      /**
+       * Whether face @p face, where its condition acts, is within a cell
+       * of some body, so that the material touches the face's nodes.
+       */
+      template <int dim>
+      bool
+      face_touches_material(const Parameters::All<dim> &parameters,
+                            const unsigned int          face)
+      {
+        const auto        &grid = parameters.grid;
+        const unsigned int axis = face / 2;
+        const double       plane =
+          face % 2 == 0 ? grid.lower_corner[axis] : grid.upper_corner[axis];
+        for (const auto &body : parameters.bodies)
+          {
+            const auto box = body.bounding_box();
+            bool touches   = std::abs(face % 2 == 0 ? box.first[axis] - plane :
+                                                    plane - box.second[axis]) <
+                           cell_size(grid, axis) * (1. + 1e-10);
+            if (grid.face_has_region[face])
+              for (unsigned int d = 0; d < dim; ++d)
+                if (d != axis)
+                  touches = touches &&
+                            box.second[d] > grid.face_regions[face].first[d] -
+                                              cell_size(grid, d) &&
+                            box.first[d] < grid.face_regions[face].second[d] +
+                                             cell_size(grid, d);
+            if (touches)
+              return true;
+          }
+        return false;
+      }
+
+      template <int dim>
+      void
+      check_supports(const Parameters::All<dim> &parameters)
+      {
+        const auto &grid = parameters.grid;
+        for (unsigned int component = 0; component < dim; ++component)
+          {
+            bool held = false;
+            for (unsigned int f = 0; f < 2 * dim && !held; ++f)
+              held =
+                Parameters::constrains(grid.face_conditions[f], f, component) &&
+                face_touches_material(parameters, f);
+            if (!held)
+              throw InputError(
+                "Nothing holds the material in the " + Names::axis(component) +
+                " direction: no 'Grid/Condition' that fixes " +
+                Names::axis(component) +
+                " displacements acts on a grid face within one cell of a "
+                "body, so the system would be singular. Set, e.g., "
+                "'Grid/Condition " +
+                Names::face(2 * component) +
+                "' to roller or fixed on a face the material touches.");
+          }
+      }
+
+      /**
+       * The memory available to the run: the sum over its machines of
+       * MemAvailable (Linux), counted once per machine; 0 if unknown.
+       */
+      double
+      available_memory(const MPI_Comm communicator)
+      {
+        MPI_Comm machine;
+        MPI_Comm_split_type(
+          communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
+        const bool first_on_machine =
+          Utilities::MPI::this_mpi_process(machine) == 0;
+        MPI_Comm_free(&machine);
+        double bytes = 0.;
+        if (first_on_machine)
+          {
+            std::ifstream meminfo("/proc/meminfo");
+            std::string   key;
+            double        kilobytes;
+            std::string   unit;
+            while (meminfo >> key >> kilobytes >> unit)
+              if (key == "MemAvailable:")
+                bytes = kilobytes * 1024.;
+          }
+        return Utilities::MPI::sum(bytes, communicator);
+      }
+
+      std::string
+      bytes_string(const double bytes)
+      {
+        const char  *units[] = {"B", "kB", "MB", "GB", "TB", "PB"};
+        double       value   = bytes;
+        unsigned int unit    = 0;
+        while (value >= 1000. && unit < 5)
+          {
+            value /= 1000.;
+            ++unit;
+          }
+        std::ostringstream out;
+        out.precision(3);
+        out << value << " " << units[unit];
+        return out.str();
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    MemoryEstimate
+    estimate_memory(const Parameters::All<dim> &parameters)
+    {
+      // Peak resident memory measured on this project's runs (Release,
+      // doc/benchmarks/scaling.md): per cell of the grid about 0.9 kB in
+      // 2D and 1.7 kB in 3D (an almost empty grid of 10^6 cells), per
+      // material point 2.7 kB in 2D (the 10^6-point collapse); 3D points
+      // couple to three times the nodes and are taken at 8 kB.
+      const double   bytes_per_cell  = dim == 2 ? 0.9e3 : 1.7e3;
+      const double   bytes_per_point = dim == 2 ? 2.7e3 : 8e3;
+      MemoryEstimate estimate;
+      estimate.n_cells   = 1.;
+      double cell_volume = 1.;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          estimate.n_cells *= parameters.grid.n_cells[d];
+          cell_volume *= cell_size(parameters.grid, d);
+        }
+      for (const auto &body : parameters.bodies)
+        estimate.n_points += body.volume() / cell_volume *
+                             std::pow(body.points_per_direction, dim);
+      estimate.bytes =
+        estimate.n_cells * bytes_per_cell + estimate.n_points * bytes_per_point;
+      return estimate;
+    }
+
+
+
+    template <int dim>
+    void
+    check(const Parameters::All<dim> &parameters, const MPI_Comm communicator)
+    {
+      // The memory first: a grid too large for the machine would stop in
+      // p4est long before any other check could speak.
+      const MemoryEstimate estimate  = estimate_memory(parameters);
+      const double         available = available_memory(communicator);
+      if (available > 0. && estimate.bytes > available)
+        {
+          std::ostringstream message;
+          message.precision(3);
+          message << "The scene needs about " << bytes_string(estimate.bytes)
+                  << " (" << estimate.n_cells << " cells, " << estimate.n_points
+                  << " material points), more than the "
+                  << bytes_string(available) << " available to the "
+                  << Utilities::MPI::n_mpi_processes(communicator)
+                  << " process(es): use fewer cells ('Grid/Number of "
+                     "cells') or points, or more machines.";
+          throw InputError(message.str());
+        }
+      check_bodies_inside(parameters);
+      check_face_regions(parameters.grid);
+      check_supports(parameters);
+    }
+
+
+
+    template void
+    check<2>(const Parameters::All<2> &, const MPI_Comm);
+    template void
+    check<3>(const Parameters::All<3> &, const MPI_Comm);
+    template MemoryEstimate
+    estimate_memory<2>(const Parameters::All<2> &);
+    template MemoryEstimate
+    estimate_memory<3>(const Parameters::All<3> &);
+  } // namespace SceneChecks
+} // namespace impm
