@@ -91,14 +91,6 @@ namespace impm
   void
   MPMSolver<dim>::start_run()
   {
-    OutputDirectory::prepare(parameters.scene.output_directory,
-                             parameters.scene.name,
-                             parameters.scene.file,
-                             parameters.scene.overwrite_existing_output ?
-                               OutputDirectory::ExistingRun::overwrite :
-                               OutputDirectory::ExistingRun::refuse,
-                             communicator);
-
     if (!force_effects.empty())
       {
         const auto infos = material_points.infos();
@@ -108,6 +100,16 @@ namespace impm
                              grid.cartesian(),
                              communicator);
       }
+    // Every check of the scene is done before the output directory is
+    // touched.
+    OutputDirectory::prepare(parameters.scene.output_directory,
+                             parameters.scene.name,
+                             parameters.scene.file,
+                             parameters.scene.overwrite_existing_output ?
+                               OutputDirectory::ExistingRun::overwrite :
+                               OutputDirectory::ExistingRun::refuse,
+                             communicator);
+
     effect_descriptions = describe_effects();
 
     pcout << "Scene '" << parameters.scene.name << "' (" << dim << "D) on "

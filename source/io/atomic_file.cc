@@ -29,8 +29,17 @@ namespace impm
       if (!out)
         throw std::runtime_error("Cannot write the file " + path +
                                  system_reason() + ".");
-      write(out);
-      out.flush();
+      try
+        {
+          write(out);
+          out.flush();
+        }
+      catch (...)
+        {
+          // A writer that checks its stream itself (deal.II's) throws;
+          // the stream's state says why.
+          out.setstate(std::ios::badbit);
+        }
       if (!out)
         failure = "Writing the file " + path + " failed" + system_reason() +
                   "; the previous version, if any, is kept.";

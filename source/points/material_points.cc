@@ -129,12 +129,17 @@ namespace impm
     Utilities::MPI::sum(points_of_body, communicator, points_of_body);
     for (unsigned int b = 0; b < bodies.size(); ++b)
       if (points_of_body[b] == 0)
-        throw InputError(
-          bodies[b].description() +
-          ": the body holds no material point: none of its " +
-          std::to_string(bodies[b].points_per_direction) +
-          " point positions per cell direction lies inside it; enlarge it "
-          "or raise its 'Points per cell direction'.");
+        {
+          const auto         box = bodies[b].bounding_box();
+          std::ostringstream message;
+          message << bodies[b].name << " ([" << box.first << "] - ["
+                  << box.second << "]) holds no material point: none of its ";
+          for (unsigned int d = 0; d < dim; ++d)
+            message << (d ? " x " : "") << bodies[b].points_per_direction;
+          message << " point positions per cell lies inside it; enlarge it "
+                     "or raise its 'Points per cell direction'.";
+          throw InputError(message.str());
+        }
     particle_handler.update_cached_numbers();
     double mass = 0.;
     for (const auto &point : particle_handler)

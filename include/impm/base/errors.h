@@ -72,6 +72,11 @@ namespace impm
       {
         action();
       }
+    catch (const CollectiveError &)
+      {
+        // Raised on every process already.
+        throw;
+      }
     catch (const std::exception &exception)
       {
         local_error = exception.what();

@@ -1,0 +1,167 @@
+#!/usr/bin/env bash
+# The bad-input suite: each case gives the program a mistaken scene or
+# command line and checks that it stops with a non-zero exit status (not a
+# signal, not the time-out that would catch a hang) and one line
+# "Error: ..." naming the problem (a pattern per case), with none of
+# deal.II's exception text. On one process that line is all the output; on
+# two (MPIEXEC N given) mpiexec may add its own note about the exit status,
+# and the cases marked "also_parallel" run there.
+# Usage: bad_input.sh IMPM BASE_SCENE [MPIEXEC N]
+base=$2
+source "$(dirname "$0")/script_helpers.sh" "$@"
+parallel=$([ ${#launcher[@]} -gt 0 ] && echo 1 || echo 0)
+n_cases=0
+n_failed=0
+
+# expect NAME REGEX [also_parallel] -- ARGUMENTS...: run and check one case.
+expect() {
+  local name=$1 regex=$2 mode=$3
+  shift 3
+  [ "$1" = "--" ] && shift
+  [ "$parallel" = 1 ] && [ "$mode" != also_parallel ] && return
+  n_cases=$((n_cases + 1))
+  # Each case in a directory of its own (the scenes write to 'results').
+  mkdir -p "$work/case_$name" && cd "$work/case_$name" || fail "no case directory"
+  timeout 60 "${launcher[@]}" "$impm" "$@" > out.txt 2>&1
+  local status=$? problem=""
+  if [ $status -eq 0 ]; then problem="exit status 0"
+  elif [ $status -eq 124 ]; then problem="no exit within 60 s (a hang)"
+  elif [ $status -gt 128 ] && [ "$parallel" = 0 ]; then problem="killed by a signal ($status)"
+  fi
+  local errors
+  errors=$(grep -c "^Error: " out.txt)
+  [ "$errors" -eq 1 ] || problem="$problem; $errors lines start with 'Error: '"
+  grep -qE "^Error: .*$regex" out.txt || problem="$problem; no error line matching '$regex'"
+  grep -qE "An error occurred in line|Stacktrace|Additional information|The violated condition" out.txt &&
+    problem="$problem; deal.II's exception text was printed"
+  if [ "$parallel" = 0 ]; then
+    [ "$(wc -l < out.txt)" -eq 1 ] || problem="$problem; more than one line of output"
+  else
+    grep -q "MPI_ABORT" out.txt && problem="$problem; the communicator was aborted"
+  fi
+  if [ -n "$problem" ]; then
+    echo "case $name: ${problem#; }"
+    sed 's/^/    | /' out.txt | head -12
+    n_failed=$((n_failed + 1))
+  fi
+  cd "$work"
+}
+
+# with FILE SED_EXPRESSION: the base scene edited (FILE in $work).
+with() { sed -e "$2" "$base" > "$work/$1"; }
+# plus FILE TEXT: the base scene with lines appended.
+plus() { { cat "$base"; printf '%b\n' "$2"; } > "$work/$1"; }
+
+# Files and syntax.
+expect missing_file "Cannot read the scene file 'nothing.prm': No such file" also_parallel -- nothing.prm
+: > "$work/empty.prm"
+expect empty_file "empty.prm: the scene sets no entry" - -- "$work/empty.prm"
+printf '# only a comment\n' > "$work/comment.prm"
+expect comment_only "comment.prm: the scene sets no entry" - -- "$work/comment.prm"
+plus unknown_entry.prm "set Foo = 1"
+expect unknown_entry "unknown_entry.prm:[0-9]+: there is no entry 'Foo' at the top level" - -- "$work/unknown_entry.prm"
+with misspelt_entry.prm "s/set Young's modulus/set Youngs modulus/"
+expect misspelt_entry "there is no entry 'Youngs modulus' in subsection 'Body 1/Material/von Mises' \(did you mean 'Young's modulus'\?\)" - -- "$work/misspelt_entry.prm"
+with unknown_subsection.prm "s/subsection Gravity/subsection Gravty/"
+expect unknown_subsection "there is no subsection 'Gravty' at the top level \(did you mean 'Gravity'\?\)" - -- "$work/unknown_subsection.prm"
+plus missing_end.prm "subsection Solver\n  set Load steps = 4"
+expect missing_end "missing_end.prm:[0-9]+: 'subsection Solver' has no matching 'end'" - -- "$work/missing_end.prm"
+plus extra_end.prm "end"
+expect extra_end "extra_end.prm:[0-9]+: There is no subsection to leave here" - -- "$work/extra_end.prm"
+plus not_a_statement.prm "sett Tolerance = 1"
+expect not_a_statement "'sett Tolerance = 1' is not a 'set', 'subsection', 'end' or 'include' line" - -- "$work/not_a_statement.prm"
+plus no_equals.prm "set Dimension 2"
+expect set_without_value "no_equals.prm:[0-9]+: Invalid format of 'set'" - -- "$work/no_equals.prm"
+
+# Values against their patterns.
+with not_a_number.prm "s/set Tolerance                 = 1e-9/set Tolerance = 1e3x/"
+expect not_a_number "not_a_number.prm:[0-9]+: 'Solver/Tolerance' = '1e3x' is not allowed: it must be a number from 1e-15 to 1" also_parallel -- "$work/not_a_number.prm"
+with nan.prm "s/set Density                   = 1000/set Density = nan/"
+expect nan "'Body 1/Density' = 'nan' is not allowed: it must be a number >= 0" - -- "$work/nan.prm"
+with infinite.prm "s/set Upper corner    = 16, 8/set Upper corner = inf, 8/"
+expect infinite "'Grid/Upper corner' = 'inf, 8' is not allowed: it must be 2 to 3 comma-separated values, each a number" - -- "$work/infinite.prm"
+with subnormal.prm "s/set Density                   = 1000/set Density = 1e-320/"
+expect subnormal "'Body 1/Density' = '1e-320' is not allowed: 1e-320 is too close to zero" - -- "$work/subnormal.prm"
+with zero_steps.prm "s/set Load steps                = 4/set Load steps = 0/"
+expect zero_load_steps "'Solver/Load steps' = '0' is not allowed: it must be an integer >= 1" - -- "$work/zero_steps.prm"
+with zero_points.prm "s/set Points per cell direction = 3/set Points per cell direction = 0/"
+expect zero_points_per_cell "'Body 1/Points per cell direction' = '0' is not allowed: it must be an integer from 1 to 10" - -- "$work/zero_points.prm"
+with dimension.prm "s/set Dimension        = 2/set Dimension = 4/"
+expect dimension "'Dimension' = '4' is not allowed: it must be an integer from 2 to 3" - -- "$work/dimension.prm"
+with model.prm "s/set Model = von Mises/set Model = von Mizes/"
+expect misspelt_model "'Body 1/Material/Model' = 'von Mizes' is not allowed: it must be one of 'Hencky elastic', 'von Mises'" - -- "$work/model.prm"
+plus shape.prm "subsection Body 1\n set Shape = circle\nend"
+expect unknown_shape "'Body 1/Shape' = 'circle' is not allowed: it must be one of 'box', 'disc', 'sphere', 'polygon'" - -- "$work/shape.prm"
+with boolean.prm "s/set Update domains = true/set Update domains = maybe/"
+expect not_a_bool "'Material points/Update domains' = 'maybe' is not allowed: it must be true or false" - -- "$work/boolean.prm"
+with one_count.prm "s/set Number of cells = 16, 8/set Number of cells = 16/"
+expect too_few_numbers "'Grid/Number of cells' = '16' is not allowed: it must be 2 to 3 comma-separated values, each an integer >= 1" - -- "$work/one_count.prm"
+with three_counts.prm "s/set Number of cells = 16, 8/set Number of cells = 16, 8, 4/"
+expect numbers_for_another_dimension "Parameter 'Grid/Number of cells' = '16, 8, 4' is not allowed: it needs 2 comma-separated numbers \\(one per dimension\\)" - -- "$work/three_counts.prm"
+with zero_cells.prm "s/set Number of cells = 16, 8/set Number of cells = 0, 8/"
+expect zero_cells "'Grid/Number of cells' = '0, 8' is not allowed: it must be 2 to 3 comma-separated values, each an integer >= 1" - -- "$work/zero_cells.prm"
+with corners.prm "s/set Upper corner    = 16, 8/set Upper corner = 16, -1/"
+expect inverted_grid "Parameter 'Grid/Upper corner' = '16, -1' is not allowed: each coordinate must exceed" - -- "$work/corners.prm"
+with young.prm "s/set Young's modulus = 1e6/set Young's modulus = 0/"
+expect zero_young "Young's modulus' = '0' is not allowed" - -- "$work/young.prm"
+with poisson.prm "s/set Poisson's ratio = 0.3/set Poisson's ratio = 0.5/"
+expect poisson_half "Poisson's ratio' = '0.5' is not allowed" - -- "$work/poisson.prm"
+with tolerance.prm "s/set Tolerance                 = 1e-9/set Tolerance = 0/"
+expect zero_tolerance "'Solver/Tolerance' = '0' is not allowed: it must be a number from 1e-15 to 1" - -- "$work/tolerance.prm"
+with solver.prm "s/set Tolerance                 = 1e-9/set Linear solver = GMRES/"
+expect unknown_solver "'Solver/Linear solver' = 'GMRES' is not allowed: it must be one of 'automatic', 'direct', 'MUMPS', 'GMRES with AMG'" - -- "$work/solver.prm"
+with bodies.prm "s/set Dimension        = 2/set Number of bodies = 5/"
+expect too_many_bodies "'Number of bodies' = '5' is not allowed: it must be an integer from 1 to 4" - -- "$work/bodies.prm"
+plus radius.prm "subsection Body 1\n set Shape = disc\n set Center = 4, 4\n set Radius = 0\nend"
+expect zero_radius "Parameter 'Body 1/Radius' = '0' is not allowed: it must be > 0" - -- "$work/radius.prm"
+with directory.prm "s/set Output directory = results/set Output directory =/"
+expect empty_directory "Parameter 'Output directory' = '' is not allowed: it must not be empty" - -- "$work/directory.prm"
+
+# Entries that contradict each other or the grid.
+with outside.prm "s/set Upper corner              = 8, 8/set Upper corner = 8, 9/"
+expect body_partly_outside "Body 1 \(\[0 0\] - \[8 9\]\) reaches outside the grid \[0 0\] - \[16 8\] in y" - -- "$work/outside.prm"
+with far.prm "s/set Lower corner              = 0, 0/set Lower corner = 20, 0/; s/set Upper corner              = 8, 8/set Upper corner = 28, 8/"
+expect body_wholly_outside "Body 1 \(\[20 0\] - \[28 8\]\) reaches outside the grid" - -- "$work/far.prm"
+plus overlap.prm "set Number of bodies = 2\nsubsection Body 2\n set Lower corner = 6, 0\n set Upper corner = 10, 4\nend"
+expect overlapping_bodies "Body 1 and Body 2 overlap \(both contain \(" also_parallel -- "$work/overlap.prm"
+plus empty_body.prm "set Number of bodies = 2\nsubsection Body 2\n set Shape = disc\n set Center = 12.0, 4.0\n set Radius = 0.1\nend"
+expect body_without_points "Body 2 \(\[11.9 3.9\] - \[12.1 4.1\]\) holds no material point: none of its 2 x 2 point positions per cell lies inside it" - -- "$work/empty_body.prm"
+plus polygon.prm "subsection Body 1\n set Shape = polygon\n set Vertices = 0, 0; 4, 4; 4, 0; 0, 4\nend"
+expect self_intersecting_polygon "Parameter 'Body 1/Vertices' = '0, 0; 4, 4; 4, 0; 0, 4' is not allowed: the polygon's edges 1 and 3 cross" - -- "$work/polygon.prm"
+plus two_vertices.prm "subsection Body 1\n set Shape = polygon\n set Vertices = 0, 0; 4, 4\nend"
+expect polygon_two_vertices "a polygon needs at least three vertices" - -- "$work/two_vertices.prm"
+{ cat "$(dirname "$base")/column_3d_gimp_plastic_8.prm"; printf 'subsection Body 1\n set Shape = disc\nend\n'; } > "$work/disc_3d.prm"
+expect disc_in_3d "'Body 1/Shape' = 'disc' is not allowed: in 3D only box or sphere" - -- "$work/disc_3d.prm"
+plus load_outside.prm "subsection Point load\n set Enabled = true\n set Positions = 40, 4\n set Force = 0, -1\nend"
+expect point_load_outside_grid "'Point load/Positions': \(40 4\) lies outside the grid \[0 0\] - \[16 8\]" - -- "$work/load_outside.prm"
+plus load_far.prm "subsection Point load\n set Enabled = true\n set Positions = 14, 7\n set Force = 0, -1\nend"
+expect point_load_off_material "'Point load/Positions': \(14 7\) is [0-9.]+ m from the nearest material point" also_parallel -- "$work/load_far.prm"
+with no_support.prm "s/set Condition y-    = roller/set Condition y-    = none/"
+expect nothing_holds_y "Nothing holds the material in the y direction" - -- "$work/no_support.prm"
+with far_support.prm "s/set Condition y-    = roller/set Condition y+    = roller/; s/set Upper corner    = 16, 8/set Upper corner = 16, 12/; s/set Number of cells = 16, 8/set Number of cells = 16, 12/"
+expect support_away_from_material "Nothing holds the material in the y direction" - -- "$work/far_support.prm"
+plus region.prm "subsection Grid\n set Region y- = 20, 0, 30, 0\nend"
+expect face_region_without_nodes "'Grid/Region y-' = \[20 0\] - \[30 0\] holds no node of the grid face y-" - -- "$work/region.prm"
+plus traction_body.prm "subsection Traction\n set Enabled = true\n set Body = 3\nend"
+expect traction_on_missing_body "Parameter 'Traction/Body' = 3 is not allowed: the scene has 1 bodies" - -- "$work/traction_body.prm"
+with huge.prm "s/set Number of cells = 16, 8/set Number of cells = 100000, 100000/"
+expect grid_too_large "The scene needs about [0-9.]+ TB \(1e\+10 cells, .* available to the" - -- "$work/huge.prm"
+
+# The command line.
+expect set_without_equals "--set 'Solver/Tolerance': expected \"Subsection/Entry=value\"" - -- "$base" --set "Solver/Tolerance"
+expect set_unknown_entry "--set 'Solver/Tolerence=1': there is no entry 'Tolerence' in subsection 'Solver' \(did you mean 'Tolerance'\?\)" - -- "$base" --set "Solver/Tolerence=1"
+expect set_bad_value "--set 'Solver/Load steps=-2': 'Solver/Load steps' = '-2' is not allowed: it must be an integer >= 1" - -- "$base" --set "Solver/Load steps=-2"
+expect unknown_option "Unknown option '--fast'; see impm --help" - -- "$base" --fast
+expect two_scene_files "Only one scene file may be given" - -- "$base" "$base"
+
+# The output directory.
+mkdir -p "$work/case_directory_of_another_run/other" && printf 'scene = another\nscene file = /elsewhere/another.prm\n' > "$work/case_directory_of_another_run/other/impm-run.txt"
+with other_run.prm "s/set Output directory = results/set Output directory = other/"
+expect directory_of_another_run "The output directory 'other' holds the run of scene 'another' \(/elsewhere/another.prm\)" also_parallel -- "$work/other_run.prm"
+mkdir -p "$work/case_directory_cannot_be_created" && : > "$work/case_directory_cannot_be_created/a_file"
+with blocked.prm "s/set Output directory = results/set Output directory = a_file\/results/"
+expect directory_cannot_be_created "Cannot create the output directory 'a_file/results' \('Output directory'\)" also_parallel -- "$work/blocked.prm"
+
+echo "bad_input: $n_cases cases, $n_failed failed"
+[ "$n_failed" -eq 0 ] || fail "$n_failed of $n_cases bad inputs were not reported as they should be"
+[ "$parallel" = 1 ] || [ "$n_cases" -ge 40 ] || fail "fewer than 40 cases"
