@@ -12,6 +12,7 @@
 #include <impm/io/scene_input.h>
 
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -33,6 +34,12 @@ namespace
     "  --overwrite                     replace the run of another scene in\n"
     "                                  the output directory (its files are\n"
     "                                  removed first)\n"
+    "  --resume                        continue the run in the scene's\n"
+    "                                  output directory from its newest\n"
+    "                                  checkpoint (on any number of\n"
+    "                                  processes)\n"
+    "  --stop-after-step K             stop after K converged load steps\n"
+    "                                  (no summary.json is written)\n"
     "  --verbose                       on an error, print deal.II's full\n"
     "                                  report (source file, condition)\n"
     "                                  after the one-line message\n"
@@ -63,6 +70,7 @@ main(int argc, char **argv)
     {
       std::string              scene_file;
       std::vector<std::string> overrides;
+      impm::RunOptions         options;
       bool                     print_parameters = false;
       for (int i = 1; i < argc; ++i)
         {
@@ -75,6 +83,20 @@ main(int argc, char **argv)
             }
           else if (argument == "--verbose")
             continue;
+          else if (argument == "--stop-after-step")
+            {
+              const std::string value = i + 1 < argc ? argv[++i] : "";
+              char             *end   = nullptr;
+              const long        steps = std::strtol(value.c_str(), &end, 10);
+              if (value.empty() || *end != '\0' || steps < 1 ||
+                  steps > 1000000000)
+                throw impm::InputError("--stop-after-step '" + value +
+                                       "': expected a number of load steps "
+                                       "from 1 to 1e9.");
+              options.stop_after_step = static_cast<unsigned int>(steps);
+            }
+          else if (argument == "--resume")
+            options.resume = true;
           else if (argument == "--overwrite")
             overrides.push_back("Existing output=overwrite");
           else if (argument == "--print-parameters")
@@ -111,14 +133,13 @@ main(int argc, char **argv)
       for (const auto &assignment : overrides)
         impm::SceneInput::apply_override(prm, assignment);
 
-      const std::string scene_identity =
-        scene_file.empty() ?
-          std::string("default scene") :
+      if (!scene_file.empty())
+        options.scene_file =
           std::filesystem::absolute(scene_file).lexically_normal().string();
       if (prm.get_integer("Dimension") == 2)
-        impm::run_scene<2>(prm, scene_identity, MPI_COMM_WORLD);
+        impm::run_scene<2>(prm, options, MPI_COMM_WORLD);
       else
-        impm::run_scene<3>(prm, scene_identity, MPI_COMM_WORLD);
+        impm::run_scene<3>(prm, options, MPI_COMM_WORLD);
     }
   catch (const std::exception &exception)
     {

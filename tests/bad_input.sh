@@ -63,6 +63,10 @@ expect unknown_entry "unknown_entry.prm:[0-9]+: there is no entry 'Foo' at the t
 with misspelt_entry.prm "s/set Young's modulus/set Youngs modulus/"
 expect misspelt_entry "there is no entry 'Youngs modulus' in subsection 'Body 1/Material/von Mises' \(did you mean 'Young's modulus'\?\)" - -- "$work/misspelt_entry.prm"
 with unknown_subsection.prm "s/subsection Gravity/subsection Gravty/"
+plus nested_subsection.prm "subsection Solver\n subsection Gravity\n end\nend"
+expect unknown_nested_subsection "nested_subsection.prm:[0-9]+: there is no subsection 'Gravity' in subsection 'Solver';"  - -- "$work/nested_subsection.prm"
+plus empty_value.prm "subsection Gravity\n set Enabled =\nend"
+expect empty_value "'Gravity/Enabled' = '' is not allowed: it must be true or false" - -- "$work/empty_value.prm"
 expect unknown_subsection "there is no subsection 'Gravty' at the top level \(did you mean 'Gravity'\?\)" - -- "$work/unknown_subsection.prm"
 plus missing_end.prm "subsection Solver\n  set Load steps = 4"
 expect missing_end "missing_end.prm:[0-9]+: 'subsection Solver' has no matching 'end'" - -- "$work/missing_end.prm"
@@ -71,7 +75,7 @@ expect extra_end "extra_end.prm:[0-9]+: There is no subsection to leave here" - 
 plus not_a_statement.prm "sett Tolerance = 1"
 expect not_a_statement "'sett Tolerance = 1' is not a 'set', 'subsection', 'end' or 'include' line" - -- "$work/not_a_statement.prm"
 plus no_equals.prm "set Dimension 2"
-expect set_without_value "no_equals.prm:[0-9]+: Invalid format of 'set'" - -- "$work/no_equals.prm"
+expect set_without_value "no_equals.prm:[0-9]+: 'set Dimension 2' is not of the form 'set Entry = value'" - -- "$work/no_equals.prm"
 
 # Values against their patterns.
 with not_a_number.prm "s/set Tolerance                 = 1e-9/set Tolerance = 1e3x/"

@@ -20,8 +20,8 @@ namespace impm
       if (name == names[b])
         return static_cast<BasisType>(b);
     throw InputError("Parameter 'Material points/Basis' = '" + name +
-                                "' is not allowed: allowed: "
-                                "standard MPM|GIMP.");
+                     "' is not allowed: allowed: "
+                     "standard MPM|GIMP.");
   }
 
 

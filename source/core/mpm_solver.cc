@@ -1,28 +1,52 @@
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/errors.h>
 #include <impm/core/mpm_solver.h>
 #include <impm/core/run.h>
 #include <impm/core/scene_checks.h>
+#include <impm/io/checkpoint.h>
 #include <impm/io/output_directory.h>
 
+#include <csignal>
 #include <filesystem>
 
 namespace impm
 {
+  namespace
+  {
+    /** Set by SIGTERM or SIGUSR1: save and stop after the current step. */
+    volatile std::sig_atomic_t stop_signal = 0;
+
+    extern "C" void
+    request_stop(int signal)
+    {
+      stop_signal = signal;
+    }
+  } // namespace
+
+
+
   template <int dim>
   MPMSolver<dim>::MPMSolver(
     const Parameters::All<dim>                    &parameters,
     std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects,
-    const MPI_Comm                                 communicator)
+    const MPI_Comm                                 communicator,
+    const RunState                                *resume_state,
+    const std::string                             &checkpoint_grid)
     : parameters(parameters)
     , force_effects(std::move(force_effects))
     , communicator(communicator)
     , pcout(std::cout,
             Utilities::MPI::this_mpi_process(communicator) == 0 &&
               !parameters.testing.enabled)
+    , root_out(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , grid(parameters.grid, communicator)
-    , material_points(parameters.bodies, grid, communicator)
+    , grid(parameters.grid, communicator, checkpoint_grid)
+    , material_points(parameters.bodies,
+                      grid,
+                      communicator,
+                      resume_state != nullptr,
+                      resume_state)
     , ghost_stabilisation(
         parameters.stabilisation.enabled ?
           std::make_unique<GhostStabilisation<dim>>(parameters.stabilisation,
@@ -43,6 +67,7 @@ namespace impm
               *linear_solver,
               timer)
     , newton_solver(parameters.solver)
+    , resume_state(resume_state)
   {
     if (Utilities::MPI::n_mpi_processes(communicator) > 1)
       grid.connect_cell_weight(
@@ -58,12 +83,17 @@ namespace impm
   void
   MPMSolver<dim>::run()
   {
+    stop_signal = 0;
+    std::signal(SIGTERM, request_stop);
+    std::signal(SIGUSR1, request_stop);
     Timer wall_timer(communicator);
     wall_timer.start();
     start_run();
 
     LoadStepControl control(parameters.solver);
-    bool            new_state = true;
+    if (resume_state)
+      control.load(*resume_state);
+    bool new_state = true;
     while (!control.finished())
       {
         if (new_state)
@@ -77,6 +107,28 @@ namespace impm
           }
         postprocessors->after_step(record);
         control.update(record.newton);
+        if (!record.converged())
+          continue;
+        const std::string stop = reason_to_stop(wall_timer.wall_time());
+        if (!stop.empty() ||
+            (parameters.checkpoint.interval > 0 &&
+             record.step_number % parameters.checkpoint.interval == 0))
+          write_checkpoint(control, record.step_number, wall_timer.wall_time());
+        if (!stop.empty())
+          {
+            root_out << "Stopped after load step " << record.step_number << " ("
+                     << stop << "); a checkpoint is written: continue with "
+                     << "impm SCENE --resume." << std::endl;
+            return;
+          }
+        if (parameters.scene.stop_after_step > 0 &&
+            record.step_number >= parameters.scene.stop_after_step)
+          {
+            root_out << "Stopped after load step " << record.step_number
+                     << " (--stop-after-step); no summary is written."
+                     << std::endl;
+            return;
+          }
       }
 
     wall_timer.stop();
@@ -105,6 +157,8 @@ namespace impm
     OutputDirectory::prepare(parameters.scene.output_directory,
                              parameters.scene.name,
                              parameters.scene.file,
+                             resume_state ?
+                               OutputDirectory::ExistingRun::resume :
                              parameters.scene.overwrite_existing_output ?
                                OutputDirectory::ExistingRun::overwrite :
                                OutputDirectory::ExistingRun::refuse,
@@ -124,6 +178,11 @@ namespace impm
     pcout << "  effects:\n";
     for (const auto &effect : effect_descriptions)
       pcout << "    " << effect << '\n';
+    if (resume_state)
+      pcout << "  resumed from the checkpoint after load step "
+            << resume_state->get_double("control.converged steps")
+            << " (load factor "
+            << resume_state->get_double("control.load factor") << ")\n";
     pcout << std::flush;
     balance_load();
 
@@ -135,7 +194,56 @@ namespace impm
                       !force_effects.empty(),
                       timer,
                       communicator});
-    postprocessors->start();
+    if (resume_state)
+      postprocessors->resume(*resume_state);
+    else
+      postprocessors->start();
+  }
+
+
+
+  template <int dim>
+  std::string
+  MPMSolver<dim>::reason_to_stop(const double elapsed) const
+  {
+    const int signal =
+      Utilities::MPI::max(static_cast<int>(stop_signal), communicator);
+    if (signal == SIGTERM)
+      return "SIGTERM";
+    if (signal == SIGUSR1)
+      return "SIGUSR1";
+    const double limit = parameters.checkpoint.wall_time_limit;
+    if (limit > 0. && Utilities::MPI::max(elapsed, communicator) > limit)
+      return "'Checkpoint/Wall time limit' = " + std::to_string(limit) +
+             " s passed";
+    return "";
+  }
+
+
+
+  template <int dim>
+  void
+  MPMSolver<dim>::write_checkpoint(const LoadStepControl &control,
+                                   const unsigned int     step_number,
+                                   const double           elapsed)
+  {
+    TimerOutput::Scope scope(timer, "checkpoint");
+    RunState           state;
+    state.set("scene.name", parameters.scene.name);
+    state.set("processes",
+              static_cast<double>(
+                Utilities::MPI::n_mpi_processes(communicator)));
+    control.save(state);
+    material_points.save(state);
+    postprocessors->save(state, elapsed);
+    Checkpoint(parameters.scene.output_directory, communicator)
+      .write(
+        [this](const std::string &file_name) {
+          grid.save(file_name,
+                    [this]() { material_points.prepare_for_checkpoint(); });
+        },
+        state);
+    pcout << "  checkpoint after load step " << step_number << std::endl;
   }
 
 
@@ -240,17 +348,38 @@ namespace impm
 
   template <int dim>
   void
-  run_scene(ParameterHandler  &prm,
-            const std::string &scene_file,
-            const MPI_Comm     communicator)
+  run_scene(ParameterHandler &prm,
+            const RunOptions &options,
+            const MPI_Comm    communicator)
   {
     Parameters::All<dim> parameters;
     parameters.parse_parameters(prm);
-    parameters.scene.file = scene_file;
+    parameters.scene.file            = options.scene_file;
+    parameters.scene.stop_after_step = options.stop_after_step;
+    parameters.scene.resume          = options.resume;
     SceneChecks::check(parameters, communicator);
+    if (!options.resume)
+      {
+        MPMSolver<dim> solver(parameters,
+                              EffectRegistry::create_enabled<dim>(prm),
+                              communicator);
+        solver.run();
+        return;
+      }
+    const Checkpoint  checkpoint(parameters.scene.output_directory,
+                                communicator);
+    const std::string grid_file = checkpoint.grid_file();
+    const RunState    state     = checkpoint.read_state();
+    if (state.get_string("scene.name") != parameters.scene.name)
+      throw InputError("--resume: the checkpoint in '" +
+                       parameters.scene.output_directory + "' is of scene '" +
+                       state.get_string("scene.name") + "', not '" +
+                       parameters.scene.name + "'.");
     MPMSolver<dim> solver(parameters,
                           EffectRegistry::create_enabled<dim>(prm),
-                          communicator);
+                          communicator,
+                          &state,
+                          grid_file);
     solver.run();
   }
 
@@ -259,7 +388,7 @@ namespace impm
   template class MPMSolver<2>;
   template class MPMSolver<3>;
   template void
-  run_scene<2>(ParameterHandler &, const std::string &, const MPI_Comm);
+  run_scene<2>(ParameterHandler &, const RunOptions &, const MPI_Comm);
   template void
-  run_scene<3>(ParameterHandler &, const std::string &, const MPI_Comm);
+  run_scene<3>(ParameterHandler &, const RunOptions &, const MPI_Comm);
 } // namespace impm

@@ -6,6 +6,7 @@
 
 #include <deal.II/grid/grid_generator.h>
 
+#include <impm/base/errors.h>
 #include <impm/base/names.h>
 #include <impm/grid/background_grid.h>
 
@@ -16,15 +17,27 @@ namespace impm
 {
   template <int dim>
   BackgroundGrid<dim>::BackgroundGrid(const Parameters::Grid<dim> &parameters,
-                                      const MPI_Comm               communicator)
+                                      const MPI_Comm               communicator,
+                                      const std::string &checkpoint_file)
     : parameters(parameters)
     , communicator(communicator)
     , triangulation(communicator)
     , fe(FE_Q<dim>(1), dim)
     , dof_handler(triangulation)
   {
-    make_triangulation();
+    make_triangulation(checkpoint_file);
     distribute_dofs();
+  }
+
+
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::save(const std::string           &file_name,
+                            const std::function<void()> &prepare)
+  {
+    prepare();
+    triangulation.save(file_name);
   }
 
 
@@ -69,7 +82,7 @@ namespace impm
 
   template <int dim>
   void
-  BackgroundGrid<dim>::make_triangulation()
+  BackgroundGrid<dim>::make_triangulation(const std::string &checkpoint_file)
   {
     const auto &p = parameters;
     grid.initialize(p.lower_corner, p.upper_corner, p.n_cells);
@@ -87,7 +100,22 @@ namespace impm
       coarse_cells[d] = p.n_cells[d] >> refinements;
     GridGenerator::subdivided_hyper_rectangle(
       triangulation, coarse_cells, p.lower_corner, p.upper_corner, true);
-    triangulation.refine_global(refinements);
+    if (checkpoint_file.empty())
+      triangulation.refine_global(refinements);
+    else
+      {
+        // The same coarse mesh, refined as saved.
+        triangulation.load(checkpoint_file);
+        types::global_cell_index n_cells = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          n_cells *= p.n_cells[d];
+        if (triangulation.n_global_active_cells() != n_cells)
+          throw InputError(
+            "--resume: the checkpoint's grid has " +
+            std::to_string(triangulation.n_global_active_cells()) +
+            " cells, the scene's 'Grid' " + std::to_string(n_cells) +
+            ": resume with the scene that wrote it.");
+      }
   }
 
 

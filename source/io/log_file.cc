@@ -22,6 +22,25 @@ namespace impm
 
 
   void
+  LogFile::reopen(const std::string &path, const std::streamoff size)
+  {
+    file_path = path;
+    std::error_code code;
+    std::filesystem::resize_file(path, size, code);
+    if (code)
+      throw std::runtime_error("Cannot continue the file " + path + " (" +
+                               code.message() + ").");
+    errno = 0;
+    file.open(path, std::ios::out | std::ios::app);
+    if (!file)
+      throw std::runtime_error("Cannot write the file " + path +
+                               system_reason() + ".");
+    complete_size = size;
+  }
+
+
+
+  void
   LogFile::flush()
   {
     const std::string text = pending.str();

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <string>
 
 namespace impm
 {
@@ -70,6 +71,27 @@ namespace impm
             if (file.path().filename() == "summary.json" ||
                 file.path().filename() == "steps.csv")
               earlier_run = true;
+        if (existing_run == ExistingRun::resume)
+          {
+            const auto [name, file] = read_record(record);
+            if (name != scene_name)
+              throw InputError(
+                "--resume: the output directory '" + path + "' holds " +
+                (name.empty() ? std::string("no run") :
+                                "the run of scene '" + name + "'") +
+                ", not of '" + scene_name + "'.");
+            // Keep the run's files; only unfinished writes go.
+            for (const auto &entry : fs::directory_iterator(directory))
+              {
+                const std::string file_name = entry.path().filename().string();
+                if (entry.is_regular_file() && is_run_file(file_name) &&
+                    file_name.size() > 4 &&
+                    file_name.compare(file_name.size() - 4, 4, ".tmp") == 0)
+                  fs::remove(entry.path());
+              }
+            throw_if_any_failed("", communicator, false);
+            return;
+          }
         if (earlier_run)
           {
             const auto [name, file] = read_record(record);
@@ -84,7 +106,12 @@ namespace impm
                 "that run with --overwrite (or 'Existing output = "
                 "overwrite').");
           }
-        // Remove the files of an earlier run and any leftover temporary.
+        // Remove the files of an earlier run, its checkpoints (a later
+        // --resume must not continue another run) and any leftover
+        // temporary.
+        for (const char *checkpoint :
+             {"checkpoint", "checkpoint.tmp", "checkpoint.old"})
+          fs::remove_all(directory / checkpoint);
         for (const auto &file : fs::directory_iterator(directory))
           {
             const std::string file_name = file.path().filename().string();

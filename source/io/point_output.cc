@@ -4,8 +4,14 @@
 #include <impm/io/atomic_file.h>
 #include <impm/io/point_output.h>
 
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 
 namespace impm
 {
@@ -196,6 +202,51 @@ namespace impm
       else
         ++c;
     return ranges;
+  }
+
+
+
+  template <int dim>
+  void
+  PointOutput<dim>::save(RunState &state, const std::string &key) const
+  {
+    std::vector<double> times;
+    std::string         files;
+    for (const auto &[time, file] : series)
+      {
+        times.push_back(time);
+        files += file + "|";
+      }
+    state.set(key + ".times", times);
+    state.set(key + ".files", files);
+    std::ostringstream archive_text;
+    {
+      boost::archive::text_oarchive archive(archive_text);
+      archive << xdmf_entries;
+    }
+    std::string text = archive_text.str();
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    state.set(key + ".xdmf", text);
+  }
+
+
+
+  template <int dim>
+  void
+  PointOutput<dim>::load(const RunState &state, const std::string &key)
+  {
+    const auto         times = state.get_list(key + ".times");
+    std::istringstream files(state.get_string(key + ".files"));
+    series.clear();
+    for (const double time : times)
+      {
+        std::string file;
+        std::getline(files, file, '|');
+        series.emplace_back(time, file);
+      }
+    std::istringstream            archive_text(state.get_string(key + ".xdmf"));
+    boost::archive::text_iarchive archive(archive_text);
+    archive >> xdmf_entries;
   }
 
 

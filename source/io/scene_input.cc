@@ -268,7 +268,7 @@ namespace impm
         const Tree         tree        = declared_tree(prm);
 
         static const std::regex bad_value(
-          R"(^The entry value (.*) for the entry named (.*) does not match the given pattern: (.*)$)");
+          R"(^The entry value ?(.*) for the entry named (.*) does not match the given pattern: (.*)$)");
         static const std::regex no_entry(
           R"(^No entry with name <(.*)> was declared in the current subsection\.$)");
         static const std::regex no_subsection(
@@ -285,15 +285,26 @@ namespace impm
             "; impm --print-parameters lists every entry.");
         if (std::regex_match(rest, match, no_subsection))
           {
-            // deal.II names the whole path; the last part is the new one.
+            // deal.II names the whole path, its parts joined by dots.
+            std::string dotted_path = path;
+            std::replace(dotted_path.begin(), dotted_path.end(), '/', '.');
             const std::string full    = match[1].str();
-            const std::string section = full.substr(full.rfind('/') + 1);
+            const std::string section = full.rfind(dotted_path, 0) == 0 ?
+                                          full.substr(dotted_path.size()) :
+                                          full;
             return InputError(
               where + "there is no subsection '" + section + "' " +
               quoted_path(path) +
               suggestion(find_subsection(tree, path), section, false) +
               "; impm --print-parameters lists every subsection.");
           }
+        if (rest.find("Invalid format of 'set'") != std::string::npos)
+          return InputError(
+            where + "'" +
+            collapse_white_space(line_number <= lines.lines.size() ?
+                                   lines.lines[line_number - 1] :
+                                   "") +
+            "' is not of the form 'set Entry = value'.");
         if (rest.find("could not be parsed") != std::string::npos)
           return InputError(
             where + "'" +

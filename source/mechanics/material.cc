@@ -292,8 +292,8 @@ namespace impm
       const double nu = prm.get_double("Poisson's ratio");
       if (!(E > 0.))
         throw InputError("Parameter 'Young's modulus' = '" +
-                                    prm.get("Young's modulus") +
-                                    "' is not allowed: it must be > 0.");
+                         prm.get("Young's modulus") +
+                         "' is not allowed: it must be > 0.");
       return {E, nu};
     }
 
@@ -324,8 +324,8 @@ namespace impm
          const double yield_stress = prm.get_double("Yield stress");
          if (!(yield_stress > 0.))
            throw InputError("Parameter 'Yield stress' = '" +
-                                       prm.get("Yield stress") +
-                                       "' is not allowed: it must be > 0.");
+                            prm.get("Yield stress") +
+                            "' is not allowed: it must be > 0.");
          return std::make_unique<HenckyVonMises>(E, nu, yield_stress);
        }});
   } // namespace

@@ -15,7 +15,9 @@ namespace impm
   template <int dim>
   MaterialPoints<dim>::MaterialPoints(const std::vector<Body<dim>> &bodies,
                                       const BackgroundGrid<dim>    &grid,
-                                      const MPI_Comm communicator)
+                                      const MPI_Comm  communicator,
+                                      const bool      from_checkpoint,
+                                      const RunState *state)
     : bodies(bodies)
     , grid(grid.cartesian())
     , communicator(communicator)
@@ -29,7 +31,42 @@ namespace impm
     particle_handler.initialize(grid.get_triangulation(),
                                 grid.get_mapping(),
                                 property_layout.n_properties);
-    seed(grid);
+    if (!from_checkpoint)
+      {
+        seed(grid);
+        return;
+      }
+    particle_handler.deserialize();
+    particle_handler.update_cached_numbers();
+    mass_at_creation = state->get_double("points.mass at creation");
+    if (static_cast<double>(particle_handler.n_global_particles()) !=
+        state->get_double("points.number"))
+      throw CollectiveError(
+        "The checkpoint's grid holds " +
+        std::to_string(particle_handler.n_global_particles()) +
+        " material points, its state " +
+        std::to_string(static_cast<long>(state->get_double("points.number"))) +
+        ": the checkpoint is damaged.");
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::prepare_for_checkpoint()
+  {
+    particle_handler.prepare_for_serialization();
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::save(RunState &state) const
+  {
+    state.set("points.mass at creation", mass_at_creation);
+    state.set("points.number",
+              static_cast<double>(particle_handler.n_global_particles()));
   }
 
 

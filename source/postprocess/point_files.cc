@@ -59,6 +59,18 @@ namespace impm
       }
 
       void
+      resume(const RunContext<dim> &, const RunState &state) override
+      {
+        output.load(state, "point files");
+      }
+
+      void
+      save(const RunContext<dim> &, RunState &state) const override
+      {
+        output.save(state, "point files");
+      }
+
+      void
       after_step(const RunContext<dim> &context,
                  const StepRecord      &record,
                  const RunStatistics<dim> &) override

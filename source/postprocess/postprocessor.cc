@@ -61,7 +61,88 @@ namespace impm
 
   template <int dim>
   void
+  RunStatistics<dim>::save(RunState &state) const
+  {
+    state.set("statistics.converged steps",
+              static_cast<double>(n_converged_steps));
+    state.set("statistics.cuts", static_cast<double>(n_cuts));
+    state.set("statistics.newton iterations",
+              static_cast<double>(total_newton_iterations));
+    state.set("statistics.residual evaluations",
+              static_cast<double>(residual_evaluations));
+    state.set("statistics.system dofs",
+              static_cast<double>(system_dofs_last_step));
+    state.set("statistics.largest point increment", largest_point_increment);
+    state.set("statistics.reaction imbalance", max_reaction_imbalance);
+    state.set("statistics.worst condition", worst_condition);
+    state.set("statistics.newton order", min_newton_order);
+    state.set("statistics.reactions", last_reactions);
+    std::vector<double> values;
+    std::string         names;
+    for (const auto &measure : last_measures)
+      {
+        values.push_back(measure.value);
+        names += measure.column + "|" + measure.label + "|";
+      }
+    state.set("statistics.measure values", values);
+    state.set("statistics.measure names", names);
+    state.set("statistics.wall time", wall_time);
+  }
+
+
+
+  template <int dim>
+  void
+  RunStatistics<dim>::load(const RunState &state)
+  {
+    const auto count = [&](const std::string &key) {
+      return static_cast<unsigned int>(state.get_double(key));
+    };
+    n_converged_steps       = count("statistics.converged steps");
+    n_cuts                  = count("statistics.cuts");
+    total_newton_iterations = count("statistics.newton iterations");
+    residual_evaluations    = count("statistics.residual evaluations");
+    system_dofs_last_step   = static_cast<types::global_dof_index>(
+      state.get_double("statistics.system dofs"));
+    largest_point_increment =
+      state.get_double("statistics.largest point increment");
+    max_reaction_imbalance = state.get_double("statistics.reaction imbalance");
+    worst_condition        = state.get_double("statistics.worst condition");
+    min_newton_order       = state.get_double("statistics.newton order");
+    last_reactions         = state.get_list("statistics.reactions");
+    const auto         values = state.get_list("statistics.measure values");
+    std::istringstream names(state.get_string("statistics.measure names"));
+    last_measures.clear();
+    for (const double value : values)
+      {
+        StepMeasure measure;
+        std::getline(names, measure.column, '|');
+        std::getline(names, measure.label, '|');
+        measure.value = value;
+        last_measures.push_back(measure);
+      }
+    wall_time = state.get_double("statistics.wall time");
+  }
+
+
+
+  template <int dim>
+  void
   Postprocessor<dim>::start(const RunContext<dim> &)
+  {}
+
+
+
+  template <int dim>
+  void
+  Postprocessor<dim>::resume(const RunContext<dim> &, const RunState &)
+  {}
+
+
+
+  template <int dim>
+  void
+  Postprocessor<dim>::save(const RunContext<dim> &, RunState &) const
   {}
 
 
@@ -118,6 +199,32 @@ namespace impm
 
   template <int dim>
   void
+  PostprocessorManager<dim>::resume(const RunState &state)
+  {
+    statistics.load(state);
+    for (const auto &postprocessor : postprocessors)
+      run_collectively(context.communicator,
+                       [&]() { postprocessor->resume(context, state); });
+  }
+
+
+
+  template <int dim>
+  void
+  PostprocessorManager<dim>::save(RunState    &state,
+                                  const double elapsed_wall_time) const
+  {
+    RunStatistics<dim> so_far = statistics;
+    so_far.wall_time += elapsed_wall_time;
+    so_far.save(state);
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->save(context, state);
+  }
+
+
+
+  template <int dim>
+  void
   PostprocessorManager<dim>::after_step(StepRecord &record)
   {
     if (record.converged())
@@ -138,7 +245,8 @@ namespace impm
   void
   PostprocessorManager<dim>::finish(const double wall_time)
   {
-    statistics.wall_time   = wall_time;
+    // A resumed run adds the time of the runs before it.
+    statistics.wall_time += wall_time;
     statistics.final_state = context.material_points.measure();
     for (const auto &postprocessor : postprocessors)
       run_collectively(context.communicator,

@@ -53,6 +53,24 @@ namespace impm
       }
 
       void
+      resume(const RunContext<dim> &context, const RunState &state) override
+      {
+        if (!is_root(context.communicator))
+          return;
+        file.reopen(context.parameters.scene.output_directory + '/' + file_name,
+                    static_cast<std::streamoff>(
+                      state.get_double(file_name + ".size")));
+      }
+
+      void
+      save(const RunContext<dim> &context, RunState &state) const override
+      {
+        // Rank 0 writes the state.
+        if (is_root(context.communicator))
+          state.set(file_name + ".size", static_cast<double>(file.size()));
+      }
+
+      void
       after_step(const RunContext<dim> &context,
                  const StepRecord      &record,
                  const RunStatistics<dim> &) override

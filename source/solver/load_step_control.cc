@@ -60,7 +60,7 @@ namespace impm
             << record.outcome_description() << '.';
     if (!parameters.step_control)
       throw CollectiveError(message.str() +
-                               " Relative residuals:" + failures.str());
+                            " Relative residuals:" + failures.str());
     step_size /= 2.;
     if (step_size < parameters.minimum_step)
       throw CollectiveError(
@@ -68,5 +68,26 @@ namespace impm
         " The load increment would fall below 'Solver/Minimum load step' = " +
         std::to_string(parameters.minimum_step) +
         ". Attempts:" + failures.str());
+  }
+
+
+
+  void
+  LoadStepControl::save(RunState &state) const
+  {
+    state.set("control.load factor", load_factor);
+    state.set("control.step size", step_size);
+    state.set("control.converged steps", static_cast<double>(n_converged));
+  }
+
+
+
+  void
+  LoadStepControl::load(const RunState &state)
+  {
+    load_factor = state.get_double("control.load factor");
+    step_size   = state.get_double("control.step size");
+    n_converged =
+      static_cast<unsigned int>(state.get_double("control.converged steps"));
   }
 } // namespace impm

@@ -10,6 +10,7 @@
 #include <impm/core/effects.h>
 #include <impm/core/parameters.h>
 #include <impm/grid/background_grid.h>
+#include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
 #include <impm/postprocess/postprocessor.h>
 #include <impm/solver/linear_solver.h>
@@ -49,10 +50,15 @@ namespace impm
      * @param parameters The scene (with its bodies and their materials).
      * @param force_effects The loads the scene enables.
      * @param communicator The processes that share the work.
+     * @param resume_state If not null, the state of the checkpoint to
+     *   continue from, whose grid and points are in @p checkpoint_grid.
+     * @param checkpoint_grid The checkpoint's grid file.
      */
     MPMSolver(const Parameters::All<dim>                    &parameters,
               std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects,
-              const MPI_Comm                                 communicator);
+              const MPI_Comm                                 communicator,
+              const RunState    *resume_state    = nullptr,
+              const std::string &checkpoint_grid = "");
 
     /**
      * @brief Run all load steps, writing what the scene's postprocessors
@@ -88,11 +94,26 @@ namespace impm
     void
     balance_load();
 
+    /** Save the run after the converged step @p step_number of
+     *  @p control; @p elapsed: this run's wall time so far. */
+    void
+    write_checkpoint(const LoadStepControl &control,
+                     const unsigned int     step_number,
+                     const double           elapsed);
+
+    /** Whether to stop (and checkpoint) now: a SIGTERM or SIGUSR1 arrived
+     *  on any process, or the wall-time limit has passed; the reason. */
+    std::string
+    reason_to_stop(const double elapsed) const;
+
     const Parameters::All<dim>                          &parameters;
     const std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects;
     const MPI_Comm                                       communicator;
-    ConditionalOStream                                   pcout;
-    TimerOutput                                          timer;
+    /** Progress (rank 0, not in test mode). */
+    ConditionalOStream pcout;
+    /** Messages that test mode prints too (rank 0). */
+    ConditionalOStream root_out;
+    TimerOutput        timer;
 
     BackgroundGrid<dim>                        grid;
     MaterialPoints<dim>                        material_points;
@@ -104,6 +125,8 @@ namespace impm
     NewtonSolver                               newton_solver;
     std::vector<std::string>                   effect_descriptions;
     std::unique_ptr<PostprocessorManager<dim>> postprocessors;
+    /** The checkpoint's state in a resumed run, else null. */
+    const RunState *resume_state;
   };
 } // namespace impm
 

@@ -208,6 +208,12 @@ namespace impm
       /** The scene file (absolute path), or "default scene"; set by
        *  run_scene(), not read from the scene. */
       std::string file;
+      /** Stop after this many converged load steps (0: run to the full
+       *  load); from the command line (--stop-after-step), not the scene. */
+      unsigned int stop_after_step = 0;
+      /** Continue from the newest checkpoint in the output directory;
+       *  from the command line (--resume), not the scene. */
+      bool resume = false;
 
       /** @brief Declare the entries (top level). */
       static void
@@ -395,6 +401,23 @@ namespace impm
     };
 
     /** @brief Everything a scene says. */
+    /** @brief When the run saves its state (subsection "Checkpoint"). */
+    struct Checkpoint
+    {
+      /** Save every this many converged load steps (0: never). */
+      unsigned int interval = 0;
+      /** Save and stop once the run has taken this many seconds of wall
+       *  time (0: no limit). */
+      double wall_time_limit = 0.;
+
+      /** @brief Declare the entries in subsection "Checkpoint". */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read them. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
     template <int dim>
     struct All
     {
@@ -417,6 +440,8 @@ namespace impm
       Stabilisation stabilisation;
       /** Output. */
       Output output;
+      /** Checkpoints. */
+      Checkpoint checkpoint;
       /** Testing. */
       Testing testing;
 

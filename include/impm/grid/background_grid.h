@@ -51,9 +51,21 @@ namespace impm
      * @brief Make the triangulation and distribute the DoFs.
      * @param parameters The scene's "Grid" subsection.
      * @param communicator The processes that share the grid.
+     * @param checkpoint_file If not empty, the grid saved by save() under
+     *   this name is loaded (on any number of processes; the cells are
+     *   then balanced by number, and the points' data attached to them
+     *   waits for MaterialPoints to unpack it).
      */
     BackgroundGrid(const Parameters::Grid<dim> &parameters,
-                   const MPI_Comm               communicator);
+                   const MPI_Comm               communicator,
+                   const std::string           &checkpoint_file = "");
+
+    /**
+     * @brief Save the triangulation with the data attached to its cells
+     * (collective). @p prepare attaches the data (the points).
+     */
+    void
+    save(const std::string &file_name, const std::function<void()> &prepare);
 
     /** @brief The weight of a cell in a repartition (see
      *  Triangulation::Signals::weight). */
@@ -227,7 +239,7 @@ namespace impm
   private:
     /** Make the triangulation from a coarse mesh refined globally. */
     void
-    make_triangulation();
+    make_triangulation(const std::string &checkpoint_file);
     /** Distribute the DoFs and build everything that depends on them. */
     void
     distribute_dofs();

@@ -22,6 +22,13 @@ namespace impm
     void
     open(const std::string &path);
 
+    /**
+     * @brief Continue the file @p path of a resumed run: cut it back to
+     * the @p size bytes it had at the checkpoint and append from there.
+     */
+    void
+    reopen(const std::string &path, const std::streamoff size);
+
     /** @brief The stream the next lines go to (held until flush()). */
     std::ostream &
     stream()

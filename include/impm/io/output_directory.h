@@ -16,7 +16,8 @@ namespace impm
    * (or the command line says `--overwrite`); a directory that holds an
    * earlier run of the same scene (same name and file) is taken over. In
    * both cases the files the earlier run wrote (`steps.csv`, `newton.csv`,
-   * `summary.json`, `points*` point files and series) are removed first,
+   * `summary.json`, `points*` point files and series, the `checkpoint*`
+   * directories) are removed first,
    * so that old and new results never mix. Leftover `*.tmp` files of an
    * interrupted write are always removed. Files IMPM does not write are
    * left alone.
@@ -30,7 +31,9 @@ namespace impm
       /** Stop with an error naming the other run. */
       refuse,
       /** Remove its files and write this run. */
-      overwrite
+      overwrite,
+      /** Continue the run of the same scene in it (keep its files). */
+      resume
     };
 
     /**

@@ -6,6 +6,7 @@
 #include <deal.II/base/point.h>
 
 #include <impm/core/parameters.h>
+#include <impm/io/run_state.h>
 
 #include <string>
 #include <utility>
@@ -102,6 +103,18 @@ namespace impm
     std::vector<DataOutBase::Patch<0, dim>> patches;
     std::vector<std::string>                names;
     std::vector<bool>                       is_vector;
+
+  public:
+    /** @brief Save the series written so far (the records behind the
+     *  `.pvd` or `.xdmf` file) into @p state under @p key. */
+    void
+    save(RunState &state, const std::string &key) const;
+
+    /** @brief Continue the series saved by save(). */
+    void
+    load(const RunState &state, const std::string &key);
+
+  private:
     /** The vtu series: load factor and record. */
     std::vector<std::pair<double, std::string>> series;
     /** The hdf5 series. */

@@ -9,6 +9,7 @@
 #include <impm/core/effects.h>
 #include <impm/core/point_properties.h>
 #include <impm/grid/background_grid.h>
+#include <impm/io/run_state.h>
 #include <impm/system/point_step.h>
 
 #include <vector>
@@ -52,10 +53,27 @@ namespace impm
      *   material).
      * @param grid The background grid.
      * @param communicator The processes that share the points.
+     * @param from_checkpoint Instead of filling the bodies, take the
+     *   points (and @p state's mass at creation) that a checkpoint attached
+     *   to the grid, which BackgroundGrid has loaded.
+     * @param state The checkpoint's state, if @p from_checkpoint.
      */
     MaterialPoints(const std::vector<Body<dim>> &bodies,
                    const BackgroundGrid<dim>    &grid,
-                   const MPI_Comm                communicator);
+                   const MPI_Comm                communicator,
+                   const bool                    from_checkpoint = false,
+                   const RunState               *state           = nullptr);
+
+    /**
+     * @brief Attach the points to the grid's cells for a checkpoint (call
+     * before BackgroundGrid::save()).
+     */
+    void
+    prepare_for_checkpoint();
+
+    /** @brief Save the points' replicated state (their mass at creation). */
+    void
+    save(RunState &state) const;
 
     /** @brief The particle handler that holds the points. */
     const Particles::ParticleHandler<dim> &

@@ -7,6 +7,7 @@
 #include <impm/base/plugin_list.h>
 #include <impm/core/parameters.h>
 #include <impm/grid/background_grid.h>
+#include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
 #include <impm/solver/newton_solver.h>
 
@@ -132,6 +133,14 @@ namespace impm
     /** @brief Count the attempt @p record in. */
     void
     add(const StepRecord &record);
+
+    /** @brief Save the statistics of the steps so far. */
+    void
+    save(RunState &state) const;
+
+    /** @brief Continue from the statistics saved by save(). */
+    void
+    load(const RunState &state);
   };
 
   /**
@@ -162,6 +171,20 @@ namespace impm
     /** @brief Called once before the first load step. */
     virtual void
     start(const RunContext<dim> &context);
+
+    /**
+     * @brief Instead of start(), in a run resumed from a checkpoint: take
+     * up the files and records from @p state (saved by save()).
+     */
+    virtual void
+    resume(const RunContext<dim> &context, const RunState &state);
+
+    /**
+     * @brief Save what resume() needs (the records behind the files) into
+     * @p state, when a checkpoint is written.
+     */
+    virtual void
+    save(const RunContext<dim> &context, RunState &state) const;
 
     /** @brief Add measures to a converged step's @p record. */
     virtual void
@@ -198,6 +221,16 @@ namespace impm
     /** @brief See Postprocessor::start(). */
     void
     start();
+
+    /** @brief Start every postprocessor of a resumed run from @p state, and
+     *  the run's statistics. */
+    void
+    resume(const RunState &state);
+
+    /** @brief Save the postprocessors' records and the statistics, with
+     *  @p elapsed_wall_time of this run added to the wall time. */
+    void
+    save(RunState &state, const double elapsed_wall_time) const;
 
     /** @brief Measure, count and write the attempt @p record. */
     void

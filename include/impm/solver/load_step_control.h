@@ -2,6 +2,7 @@
 #define impm_solver_load_step_control_h
 
 #include <impm/core/parameters.h>
+#include <impm/io/run_state.h>
 #include <impm/solver/newton_solver.h>
 
 #include <sstream>
@@ -67,6 +68,14 @@ namespace impm
      */
     void
     update(const NewtonRecord &record);
+
+    /** @brief Save the control's state (load factor, step size, steps). */
+    void
+    save(RunState &state) const;
+
+    /** @brief Continue from a state saved by save(). */
+    void
+    load(const RunState &state);
 
   private:
     const Parameters::Solver &parameters;

@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# Checkpoints and --resume. The collapse at h = 1 m over 40 load steps (with
+# point files every 4 steps) is run
+#  1. without interruption: the reference (the test summary and the
+#     non-timing columns of steps.csv and newton.csv);
+#  2. with a checkpoint every 3 steps, stopped after step 10
+#     (--stop-after-step) and resumed from the checkpoint of step 9 (on
+#     MPIEXEC N processes if given, after the first part ran on one): the
+#     same final summary, steps.csv and newton.csv (numdiff at the suite's
+#     tolerances), and a .pvd naming each point file once;
+#  3. on one process only: killed with SIGKILL at four moments drawn with a
+#     fixed seed (0 to 0.15 s after the run has done a step), resumed after each kill (started afresh if no checkpoint
+#     was complete yet) and finally run to the end: the same final summary,
+#     and every point file complete and readable by VTK's XML readers.
+# Usage: resume.sh IMPM SCENE [MPIEXEC N]
+scene=$2
+source "$(dirname "$0")/script_helpers.sh" "$@"
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+settings=(--set "Solver/Load steps=40" --set "Output/Interval=4")
+compare() {
+  numdiff -q -a 1e-6 -r 1e-8 -s ' \t\n=,:;<>[](){}^' "$1" "$2" > /dev/null ||
+    { diff "$1" "$2" | head -20; fail "$3"; }
+}
+# The summary lines (not the per-step lines) of a test-mode printout.
+summary() { grep -v "^step \|^Stopped\|checkpoint" "$1"; }
+# A csv file without its time columns (wall times differ between runs).
+untimed() {
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) keep[i] = ($i !~ /seconds|^time_/) }
+           { line = ""; for (i = 1; i <= NF; ++i) if (keep[i]) line = line $i ",";
+             print line }' "$1"
+}
+
+# 1. The reference.
+"$impm" "$scene" "${settings[@]}" > full.txt 2>&1 || fail "the uninterrupted run failed"
+summary full.txt > full_summary.txt
+untimed results/steps.csv > full_steps.csv
+untimed results/newton.csv > full_newton.csv
+[ "$(grep -c '^step ' full.txt)" -ge 40 ] || fail "the reference did not print its steps"
+
+# 2. Stopped after step 10, resumed from step 9.
+"$impm" "$scene" "${settings[@]}" --set "Checkpoint/Interval=3" \
+  --stop-after-step 10 > part1.txt 2>&1 || fail "the first part failed"
+grep -q "Stopped after load step 10" part1.txt || fail "the first part did not stop after step 10"
+grep -q "^control.converged steps = 9$" results/checkpoint/state.txt ||
+  fail "the newest checkpoint is not that of step 9"
+"${launcher[@]}" "$impm" "$scene" "${settings[@]}" --set "Checkpoint/Interval=3" \
+  --resume > part2.txt 2>&1 || fail "the resumed run failed"
+grep -q "^step  10 " part2.txt || fail "the resumed run did not start at step 10"
+grep -q "^step   9 " part2.txt && fail "the resumed run repeated step 9"
+summary part2.txt > resumed_summary.txt
+compare full_summary.txt resumed_summary.txt "the resumed run ends in another state"
+untimed results/steps.csv > resumed_steps.csv
+untimed results/newton.csv > resumed_newton.csv
+compare full_steps.csv resumed_steps.csv "steps.csv of the resumed run differs"
+compare full_newton.csv resumed_newton.csv "newton.csv of the resumed run differs"
+dataset_files=$(grep -o 'file="[^"]*"' results/points.pvd)
+[ "$(echo "$dataset_files" | sort -u | wc -l)" -eq "$(echo "$dataset_files" | wc -l)" ] ||
+  fail "points.pvd names a file twice"
+/usr/bin/python3 "$here/check_point_files.py" results > check.txt || { cat check.txt; fail "a point file is incomplete"; }
+
+# 3. Killed and resumed (one process: SIGKILL to mpiexec would leave its
+#    children running).
+if [ ${#launcher[@]} -eq 0 ]; then
+  rm -rf results
+  RANDOM=2026
+  for kill in 1 2 3 4; do
+    # 0 to 0.15 s after the run has done a step (its start-up, MPI's
+    # included, takes about 0.7 s here, its 40 steps about 0.6 s).
+    delay=$(printf '0.%02d' $((RANDOM % 15)))
+    if [ -f results/checkpoint/state.txt ] || [ -f results/checkpoint.old/state.txt ]; then
+      mode=(--resume)
+    else
+      mode=(--overwrite)
+    fi
+    rows=0
+    [ "${mode[0]}" = --resume ] && rows=$(wc -l < results/steps.csv)
+    "$impm" "$scene" "${settings[@]}" --set "Checkpoint/Interval=1" "${mode[@]}" \
+      > "killed_$kill.txt" 2>&1 &
+    pid=$!
+    # steps.csv is cut back to the checkpoint and grows by a row per step.
+    for _ in $(seq 300); do
+      [ -f results/steps.csv ] && [ "$(wc -l < results/steps.csv)" -gt $((rows + 1)) ] && break
+      kill -0 $pid 2> /dev/null || break
+      sleep 0.1
+    done
+    sleep "$delay"
+    kill -KILL $pid 2> /dev/null
+    wait $pid 2> /dev/null
+    echo "kill $kill $delay s after a step of its own (${mode[*]}): steps.csv $rows -> $(wc -l < results/steps.csv) rows" >> kills.txt
+  done
+  [ -f results/checkpoint/state.txt ] || [ -f results/checkpoint.old/state.txt ] ||
+    { cat kills.txt; fail "no checkpoint was complete after four kills"; }
+  "$impm" "$scene" "${settings[@]}" --set "Checkpoint/Interval=1" --resume \
+    > last.txt 2>&1 || { cat kills.txt; fail "the run after the kills failed"; }
+  summary last.txt > killed_summary.txt
+  compare full_summary.txt killed_summary.txt "the killed and resumed run ends in another state"
+  /usr/bin/python3 "$here/check_point_files.py" results > check.txt ||
+    { cat kills.txt check.txt; fail "a point file is incomplete after the kills"; }
+  [ -f results/summary.json ] || fail "no summary.json after the last part"
+  cat kills.txt
+fi
+echo "resume: the resumed runs end in the state of the uninterrupted one"
