@@ -131,6 +131,8 @@ expect overlapping_bodies "Body 1 and Body 2 overlap \(both contain \(" also_par
 plus empty_body.prm "set Number of bodies = 2\nsubsection Body 2\n set Shape = disc\n set Center = 12.0, 4.0\n set Radius = 0.1\nend"
 expect body_without_points "Body 2 \(\[11.9 3.9\] - \[12.1 4.1\]\) holds no material point: none of its 2 x 2 point positions per cell lies inside it" - -- "$work/empty_body.prm"
 plus polygon.prm "subsection Body 1\n set Shape = polygon\n set Vertices = 0, 0; 4, 4; 4, 0; 0, 4\nend"
+plus vertex_word.prm "subsection Body 1\n set Shape = polygon\n set Vertices = 0, 0; 4, x; 0, 4\nend"
+expect polygon_vertex_not_a_number "Parameter 'Body 1/Vertices' = '0, 0; 4, x; 0, 4' is not allowed: 'x' is not a finite number" - -- "$work/vertex_word.prm"
 expect self_intersecting_polygon "Parameter 'Body 1/Vertices' = '0, 0; 4, 4; 4, 0; 0, 4' is not allowed: the polygon's edges 1 and 3 cross" - -- "$work/polygon.prm"
 plus two_vertices.prm "subsection Body 1\n set Shape = polygon\n set Vertices = 0, 0; 4, 4\nend"
 expect polygon_two_vertices "a polygon needs at least three vertices" - -- "$work/two_vertices.prm"

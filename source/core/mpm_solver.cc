@@ -119,6 +119,8 @@ namespace impm
             root_out << "Stopped after load step " << record.step_number << " ("
                      << stop << "); a checkpoint is written: continue with "
                      << "impm SCENE --resume." << std::endl;
+            if (!parameters.testing.enabled)
+              timer.print_summary();
             return;
           }
         if (parameters.scene.stop_after_step > 0 &&
@@ -127,6 +129,8 @@ namespace impm
             root_out << "Stopped after load step " << record.step_number
                      << " (--stop-after-step); no summary is written."
                      << std::endl;
+            if (!parameters.testing.enabled)
+              timer.print_summary();
             return;
           }
       }

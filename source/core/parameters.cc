@@ -6,6 +6,8 @@
 #include <impm/core/parameters.h>
 #include <impm/mechanics/material.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -27,6 +29,30 @@ namespace impm
     namespace
     {
       /**
+       * The numbers of the comma-separated @p words of entry @p entry (=
+       * @p value); a word that is not a finite number is an error naming
+       * the entry.
+       */
+      std::vector<double>
+      to_numbers(const std::vector<std::string> &words,
+                 const std::string              &entry,
+                 const std::string              &value)
+      {
+        std::vector<double> numbers;
+        for (const auto &word : words)
+          {
+            char        *end    = nullptr;
+            const double number = std::strtod(word.c_str(), &end);
+            if (word.empty() || *end != '\0' || !std::isfinite(number))
+              bad_value(entry, value, "'" + word + "' is not a finite number.");
+            numbers.push_back(number);
+          }
+        return numbers;
+      }
+
+
+
+      /**
        * The @p n comma-separated numbers of @p entry, or none if
        * @p may_be_empty; anything else is an error naming the entry.
        */
@@ -39,7 +65,9 @@ namespace impm
       {
         const std::string         value = prm.get(entry);
         const std::vector<double> numbers =
-          Utilities::string_to_double(Utilities::split_string_list(value));
+          to_numbers(Utilities::split_string_list(value),
+                     section + "/" + entry,
+                     value);
         if (numbers.size() != n && !(may_be_empty && numbers.empty()))
           bad_value(section + "/" + entry,
                     value,
@@ -84,8 +112,9 @@ namespace impm
       std::vector<std::vector<double>> points;
       for (const auto &point : Utilities::split_string_list(value, ';'))
         {
-          points.push_back(
-            Utilities::string_to_double(Utilities::split_string_list(point)));
+          points.push_back(to_numbers(Utilities::split_string_list(point),
+                                      section + "/" + entry,
+                                      value));
           if (points.back().size() != n)
             bad_value(section + "/" + entry,
                       value,
@@ -303,6 +332,15 @@ namespace impm
                         Patterns::Double(1e-15, 1.),
                         "Newton converges when |r| / |f_ext| on the free "
                         "degrees of freedom falls below this (1e-15 to 1).");
+      prm.declare_entry("Absolute tolerance",
+                        "0",
+                        Patterns::Double(0.),
+                        "Newton also converges when |r| (in N, per unit "
+                        "thickness in 2D) falls below this (0: off; >= 0). "
+                        "For loads so small next to the internal forces "
+                        "that round-off in f_int, about 1e-15 |f_int|, "
+                        "exceeds 'Tolerance' |f_ext|; a step that fails "
+                        "there says so.");
       prm.declare_entry("Maximum iterations",
                         "20",
                         Patterns::Integer(1, 1000),
@@ -394,6 +432,7 @@ namespace impm
         formulation_names, "Solver/Formulation", prm.get("Formulation")));
       n_load_steps              = prm.get_integer("Load steps");
       tolerance                 = prm.get_double("Tolerance");
+      absolute_tolerance        = prm.get_double("Absolute tolerance");
       max_iterations            = prm.get_integer("Maximum iterations");
       linear_solver             = static_cast<LinearSolverType>(selection_index(
         linear_solver_names, "Solver/Linear solver", prm.get("Linear solver")));

@@ -58,6 +58,14 @@ namespace impm
     message << "Load step " << n_converged + 1 << " (from load factor "
             << load_factor << " to " << next << "): Newton "
             << record.outcome_description() << '.';
+    // A residual at the round-off of the internal forces cannot fall
+    // further: say so, and what to do.
+    if (record.last_internal_force_norm > 0. &&
+        record.last_norm < 1e-12 * record.last_internal_force_norm)
+      message << " Its residual (" << record.last_norm
+              << " N) is at the round-off level of the internal forces ("
+              << record.last_internal_force_norm
+              << " N): set 'Solver/Absolute tolerance' above it.";
     if (!parameters.step_control)
       throw CollectiveError(message.str() +
                             " Relative residuals:" + failures.str());

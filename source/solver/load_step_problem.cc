@@ -72,7 +72,9 @@ namespace impm
       reference = internal_force.l2_norm();
     if (reference == 0.)
       reference = 1.;
-    residual.relative = norm / reference;
+    residual.relative            = norm / reference;
+    residual.norm                = norm;
+    residual.internal_force_norm = internal_force.l2_norm();
     return residual;
   }
 

@@ -71,9 +71,12 @@ namespace impm
             return record;
           }
         record.residuals.push_back(residual.relative);
+        record.last_norm                = residual.norm;
+        record.last_internal_force_norm = residual.internal_force_norm;
         if (!std::isfinite(residual.relative))
           record.outcome = NewtonOutcome::not_finite;
-        else if (residual.relative < parameters.tolerance)
+        else if (residual.relative < parameters.tolerance ||
+                 residual.norm < parameters.absolute_tolerance)
           record.outcome = NewtonOutcome::converged;
         else if (residual.relative >
                  parameters.divergence_factor * record.residuals.front())

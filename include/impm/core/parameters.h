@@ -279,6 +279,9 @@ namespace impm
       unsigned int n_load_steps;
       /** Convergence when |r| / |f_ext| falls below this. */
       double tolerance;
+      /** Newton also converges when the residual norm falls below this
+       *  (N; 0: off). */
+      double absolute_tolerance = 0.;
       /** Newton iterations allowed per load step. */
       unsigned int max_iterations;
       /** Direct (Amesos KLU) or GMRES with AMG (Trilinos ML). */

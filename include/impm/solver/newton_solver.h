@@ -64,6 +64,11 @@ namespace impm
       bool admissible = true;
       /** The residual norm relative to the problem's force scale. */
       double relative = 0.;
+      /** The residual norm (N). */
+      double norm = 0.;
+      /** The norm of the internal forces it is the difference to (N): the
+       *  scale of its round-off. */
+      double internal_force_norm = 0.;
     };
 
     /** @brief Evaluate the residual of the current iterate. */
@@ -93,6 +98,8 @@ namespace impm
     NewtonOutcome outcome = NewtonOutcome::converged;
     /** Relative residual of each iterate, the start included. */
     std::vector<double> residuals;
+    /** The last iterate's residual norm and internal force norm (N). */
+    double last_norm = 0., last_internal_force_norm = 0.;
     /** The linear solve of each iteration (the last may have failed). */
     std::vector<LinearSolveReport> linear_solves;
 
