@@ -158,6 +158,8 @@ expect set_without_equals "--set 'Solver/Tolerance': expected \"Subsection/Entry
 expect set_unknown_entry "--set 'Solver/Tolerence=1': there is no entry 'Tolerence' in subsection 'Solver' \(did you mean 'Tolerance'\?\)" - -- "$base" --set "Solver/Tolerence=1"
 expect set_bad_value "--set 'Solver/Load steps=-2': 'Solver/Load steps' = '-2' is not allowed: it must be an integer >= 1" - -- "$base" --set "Solver/Load steps=-2"
 expect unknown_option "Unknown option '--fast'; see impm --help" - -- "$base" --fast
+expect resume_without_checkpoint "--resume: the output directory 'results' holds no complete checkpoint" also_parallel -- "$base" --resume
+expect stop_after_zero_steps "--stop-after-step '0': expected a number of load steps from 1 to 1e9" - -- "$base" --stop-after-step 0
 expect two_scene_files "Only one scene file may be given" - -- "$base" "$base"
 
 # The output directory.
