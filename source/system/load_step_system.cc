@@ -141,15 +141,26 @@ namespace impm
     relevant.compress();
 
     // The sparsity pattern comes from the points' supports and the
-    // stabilised faces.
-    DynamicSparsityPattern dsp(relevant);
+    // stabilised faces. When it is made of the same row sets as the
+    // matrix's on every process, the matrix is kept (it is zeroed before
+    // each assembly).
+    std::vector<std::vector<types::global_dof_index>> face_rows;
     if (ghost_stabilisation != nullptr)
       for (const auto &face : ghost_stabilisation->faces())
-        {
-          const auto indices = face_indices(face.dofs);
-          for (const auto row : indices)
-            dsp.add_entries(row, indices.begin(), indices.end(), true);
-        }
+        face_rows.push_back(face_indices(face.dofs));
+    const std::uint64_t fingerprint = pattern_fingerprint(face_rows);
+    ++n_setups;
+    if (Utilities::MPI::min(fingerprint == matrix_fingerprint ? 1u : 0u,
+                            communicator) == 1u)
+      {
+        ++n_patterns_reused;
+        return;
+      }
+    matrix_fingerprint = fingerprint;
+    DynamicSparsityPattern dsp(relevant);
+    for (const auto &indices : face_rows)
+      for (const auto row : indices)
+        dsp.add_entries(row, indices.begin(), indices.end(), true);
     for (const AssemblyGroup &group : assembly_groups)
       for (const auto row : group.rows)
         dsp.add_entries(row, group.rows.begin(), group.rows.end(), true);
@@ -322,6 +333,42 @@ namespace impm
       if (index_in_system[i] != numbers::invalid_dof_index)
         increment.local_element(i) += solution[index_in_system[i]];
     increment.update_ghost_values();
+  }
+
+
+
+  template <int dim>
+  std::uint64_t
+  LoadStepSystem<dim>::pattern_fingerprint(
+    const std::vector<std::vector<types::global_dof_index>> &face_rows) const
+  {
+    std::vector<const std::vector<types::global_dof_index> *> row_sets;
+    for (const AssemblyGroup &group : assembly_groups)
+      row_sets.push_back(&group.rows);
+    for (const auto &rows : face_rows)
+      row_sets.push_back(&rows);
+    const auto by_content = [](const auto *a, const auto *b) {
+      return *a < *b;
+    };
+    const auto same = [](const auto *a, const auto *b) { return *a == *b; };
+    std::sort(row_sets.begin(), row_sets.end(), by_content);
+    row_sets.erase(std::unique(row_sets.begin(), row_sets.end(), same),
+                   row_sets.end());
+    // FNV-1a over the sizes and the rows; never 0 (0 means no matrix).
+    std::uint64_t hash = 1469598103934665603ull;
+    const auto    mix  = [&hash](const std::uint64_t value) {
+      hash = (hash ^ value) * 1099511628211ull;
+    };
+    mix(owned.size());
+    mix(owned.n_elements());
+    mix(owned.n_elements() > 0 ? owned.nth_index_in_set(0) : 0);
+    for (const auto *rows : row_sets)
+      {
+        mix(rows->size());
+        for (const auto row : *rows)
+          mix(row);
+      }
+    return hash == 0 ? 1 : hash;
   }
 
 

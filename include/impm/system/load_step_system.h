@@ -12,6 +12,7 @@
 #include <impm/solver/near_null_space.h>
 #include <impm/system/point_step.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace impm
@@ -137,7 +138,24 @@ namespace impm
     /** @brief The solution (the Newton correction). */
     TrilinosWrappers::MPI::Vector solution;
 
+    /** @brief Load steps whose setup() kept the matrix of the step before
+     *  (the same sparsity pattern on every process), and all steps. */
+    unsigned int n_patterns_reused = 0, n_setups = 0;
+
   private:
+    /**
+     * @brief A fingerprint of what the sparsity pattern is made of on this
+     * process: the system's size and this process's rows, the distinct
+     * row sets of the assembly groups and of the stabilised faces (@p
+     * face_rows). Equal fingerprints give equal patterns.
+     */
+    std::uint64_t
+    pattern_fingerprint(
+      const std::vector<std::vector<types::global_dof_index>> &face_rows) const;
+
+    /** The fingerprint of the pattern the matrix has (0: none yet). */
+    std::uint64_t matrix_fingerprint = 0;
+
     /** Order the points by support and cut the order into groups. */
     void
     make_assembly_groups();
