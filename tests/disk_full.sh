@@ -5,6 +5,8 @@
 # only complete files under final names: steps.csv and newton.csv end with
 # whole rows, every point file reads with VTK's XML readers, no *.tmp file
 # and no summary.json is left.
+# On two processes, also: one process alone cannot write (the others must
+# stop with its message, not wait for it).
 # On two processes mpiexec runs each process under the limit through bash,
 # with Open MPI's shared-memory transport off (its segment file would exceed
 # the limit before the program starts) and PMIx's hash store (likewise).
@@ -59,4 +61,19 @@ limit=20
 limited $limit "${settings[@]}" --set "Output/Interval=1" > log.txt 2>&1
 check_stop $? "points_[0-9]+\.[0-9]+\.vtu"
 ls results/points_00001.pvtu > /dev/null 2>&1 || fail "no point files were kept before the failure"
-echo "disk_full: both runs stopped with one clear line and complete files"
+# 3. On two processes: only process 1 cannot write (a directory stands where
+#    its first piece's temporary file goes); both stop with its message.
+if [ ${#launcher[@]} -gt 0 ]; then
+  rm -rf results && mkdir -p results/points_00000.0001.vtu.tmp
+  printf 'scene = collapse_h1_4steps\nscene file = %s\n' "$(cd "$(dirname "$scene")" && pwd)/$(basename "$scene")" \
+    > results/impm-run.txt
+  timeout 120 "${launcher[@]}" "$impm" "$scene" "${settings[@]}" --set "Output/Interval=1" > log.txt 2>&1
+  status=$?
+  [ $status -eq 124 ] && fail "no exit within 120 s when one process failed (a hang)"
+  [ $status -eq 0 ] && fail "the run did not stop when one process could not write"
+  [ "$(grep -c '^Error: ' log.txt)" -eq 1 ] || fail "not exactly one error line"
+  grep -q "^Error: process 1: Cannot write the file results/points_00000.0001.vtu (Is a directory)\.$" log.txt ||
+    fail "the error does not name the process, the file and the cause"
+  grep -q "MPI_ABORT" log.txt && fail "the communicator was aborted instead of stopping together"
+fi
+echo "disk_full: the runs stopped with one clear line and complete files"
