@@ -132,6 +132,7 @@ main(int argc, char **argv)
         impm::SceneInput::parse_file(prm, scene_file);
       for (const auto &assignment : overrides)
         impm::SceneInput::apply_override(prm, assignment);
+      impm::SceneInput::check_numbers(prm);
 
       if (!scene_file.empty())
         options.scene_file =
@@ -155,7 +156,7 @@ main(int argc, char **argv)
                 << (collective ? "" : "process " + std::to_string(rank) + ": ")
                 << impm::one_line_message(exception) << std::endl;
       if (verbose)
-        std::cerr << impm::full_message(exception) << std::endl;
+        std::cerr << exception.what() << std::endl;
       if (!collective)
         MPI_Abort(MPI_COMM_WORLD, 1);
       return 1;

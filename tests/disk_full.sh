@@ -65,8 +65,6 @@ ls results/points_00001.pvtu > /dev/null 2>&1 || fail "no point files were kept 
 #    its first piece's temporary file goes); both stop with its message.
 if [ ${#launcher[@]} -gt 0 ]; then
   rm -rf results && mkdir -p results/points_00000.0001.vtu.tmp
-  printf 'scene = collapse_h1_4steps\nscene file = %s\n' "$(cd "$(dirname "$scene")" && pwd)/$(basename "$scene")" \
-    > results/impm-run.txt
   timeout 120 "${launcher[@]}" "$impm" "$scene" "${settings[@]}" --set "Output/Interval=1" > log.txt 2>&1
   status=$?
   [ $status -eq 124 ] && fail "no exit within 120 s when one process failed (a hang)"

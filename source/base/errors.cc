@@ -36,27 +36,15 @@ namespace impm
 
 
 
-  namespace
+  std::string
+  collapse_white_space(const std::string &text)
   {
-    /** @p text with every run of white space replaced by one blank. */
-    std::string
-    collapse_white_space(const std::string &text)
-    {
-      std::string result;
-      bool        blank = false;
-      for (const char c : text)
-        if (c == ' ' || c == '\n' || c == '\t' || c == '\r')
-          blank = !result.empty();
-        else
-          {
-            if (blank)
-              result += ' ';
-            result += c;
-            blank = false;
-          }
-      return result;
-    }
-  } // namespace
+    std::istringstream in(text);
+    std::string        word, result;
+    while (in >> word)
+      result += (result.empty() ? "" : " ") + word;
+    return result;
+  }
 
 
 
@@ -84,9 +72,4 @@ namespace impm
 
 
 
-  std::string
-  full_message(const std::exception &exception)
-  {
-    return exception.what();
-  }
 } // namespace impm

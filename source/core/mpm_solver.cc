@@ -42,11 +42,7 @@ namespace impm
     , root_out(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , grid(parameters.grid, communicator, checkpoint_grid)
-    , material_points(parameters.bodies,
-                      grid,
-                      communicator,
-                      resume_state != nullptr,
-                      resume_state)
+    , material_points(parameters.bodies, grid, communicator, resume_state)
     , ghost_stabilisation(
         parameters.stabilisation.enabled ?
           std::make_unique<GhostStabilisation<dim>>(parameters.stabilisation,
@@ -362,7 +358,6 @@ namespace impm
     parameters.parse_parameters(prm);
     parameters.scene.file            = options.scene_file;
     parameters.scene.stop_after_step = options.stop_after_step;
-    parameters.scene.resume          = options.resume;
     SceneChecks::check(parameters, communicator);
     if (!options.resume)
       {

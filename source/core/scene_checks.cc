@@ -216,36 +216,44 @@ namespace impm
         out << value << " " << units[unit];
         return out.str();
       }
+      /** The estimated peak memory of a run, with the counts behind it. */
+      struct MemoryEstimate
+      {
+        double n_cells  = 0.;
+        double n_points = 0.;
+        double bytes    = 0.;
+      };
+
+
+
+      template <int dim>
+      MemoryEstimate
+      estimate_memory(const Parameters::All<dim> &parameters)
+      {
+        // Peak resident memory measured on this project's runs (Release):
+        // per cell of the grid about 0.9 kB in 2D and 1.7 kB in 3D (almost
+        // empty grids, doc/benchmarks/README.md, "Reliability"), per material
+        // point 2.7 kB in 2D (the 10^6-point collapse, doc/benchmarks/
+        // scaling.md); 3D points, not measured, couple to three times the
+        // nodes and are taken at 8 kB.
+        const double   bytes_per_cell  = dim == 2 ? 0.9e3 : 1.7e3;
+        const double   bytes_per_point = dim == 2 ? 2.7e3 : 8e3;
+        MemoryEstimate estimate;
+        estimate.n_cells   = 1.;
+        double cell_volume = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            estimate.n_cells *= parameters.grid.n_cells[d];
+            cell_volume *= cell_size(parameters.grid, d);
+          }
+        for (const auto &body : parameters.bodies)
+          estimate.n_points += body.volume() / cell_volume *
+                               std::pow(body.points_per_direction, dim);
+        estimate.bytes = estimate.n_cells * bytes_per_cell +
+                         estimate.n_points * bytes_per_point;
+        return estimate;
+      }
     } // namespace
-
-
-
-    template <int dim>
-    MemoryEstimate
-    estimate_memory(const Parameters::All<dim> &parameters)
-    {
-      // Peak resident memory measured on this project's runs (Release,
-      // doc/benchmarks/scaling.md): per cell of the grid about 0.9 kB in
-      // 2D and 1.7 kB in 3D (an almost empty grid of 10^6 cells), per
-      // material point 2.7 kB in 2D (the 10^6-point collapse); 3D points
-      // couple to three times the nodes and are taken at 8 kB.
-      const double   bytes_per_cell  = dim == 2 ? 0.9e3 : 1.7e3;
-      const double   bytes_per_point = dim == 2 ? 2.7e3 : 8e3;
-      MemoryEstimate estimate;
-      estimate.n_cells   = 1.;
-      double cell_volume = 1.;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          estimate.n_cells *= parameters.grid.n_cells[d];
-          cell_volume *= cell_size(parameters.grid, d);
-        }
-      for (const auto &body : parameters.bodies)
-        estimate.n_points += body.volume() / cell_volume *
-                             std::pow(body.points_per_direction, dim);
-      estimate.bytes =
-        estimate.n_cells * bytes_per_cell + estimate.n_points * bytes_per_point;
-      return estimate;
-    }
 
 
 
@@ -281,9 +289,5 @@ namespace impm
     check<2>(const Parameters::All<2> &, const MPI_Comm);
     template void
     check<3>(const Parameters::All<3> &, const MPI_Comm);
-    template MemoryEstimate
-    estimate_memory<2>(const Parameters::All<2> &);
-    template MemoryEstimate
-    estimate_memory<3>(const Parameters::All<3> &);
   } // namespace SceneChecks
 } // namespace impm

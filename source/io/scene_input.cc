@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 
 #include <impm/base/errors.h>
 #include <impm/io/scene_input.h>
@@ -23,26 +24,6 @@ namespace impm
     namespace
     {
       using Tree = boost::property_tree::ptree;
-
-      std::string
-      trim(const std::string &text)
-      {
-        const auto first = text.find_first_not_of(" \t\r\n");
-        if (first == std::string::npos)
-          return "";
-        const auto last = text.find_last_not_of(" \t\r\n");
-        return text.substr(first, last - first + 1);
-      }
-
-      std::string
-      collapse_white_space(const std::string &text)
-      {
-        std::istringstream in(text);
-        std::string        word, result;
-        while (in >> word)
-          result += (result.empty() ? "" : " ") + word;
-        return result;
-      }
 
       std::string
       join(const std::vector<std::string> &parts, const std::string &glue)
@@ -87,7 +68,7 @@ namespace impm
           std::vector<std::pair<std::string, unsigned int>> path;
           for (unsigned int i = 0; i + 1 < line_number && i < lines.size(); ++i)
             {
-              const std::string line = trim(lines[i]);
+              const std::string line = dealii::Utilities::trim(lines[i]);
               std::string       keyword =
                 line.substr(0, std::min(line.find(' '), line.size()));
               std::transform(keyword.begin(),
@@ -118,7 +99,7 @@ namespace impm
         {
           for (const auto &line : lines)
             {
-              const std::string words = trim(line);
+              const std::string words = dealii::Utilities::trim(line);
               if (words.size() > 3 && (words.compare(0, 4, "set ") == 0 ||
                                        words.compare(0, 4, "SET ") == 0 ||
                                        words.compare(0, 8, "include ") == 0 ||
@@ -298,21 +279,17 @@ namespace impm
               suggestion(find_subsection(tree, path), section, false) +
               "; impm --print-parameters lists every subsection.");
           }
+        const std::string line =
+          line_number <= lines.lines.size() ?
+            collapse_white_space(lines.lines[line_number - 1]) :
+            "";
         if (rest.find("Invalid format of 'set'") != std::string::npos)
-          return InputError(
-            where + "'" +
-            collapse_white_space(line_number <= lines.lines.size() ?
-                                   lines.lines[line_number - 1] :
-                                   "") +
-            "' is not of the form 'set Entry = value'.");
+          return InputError(where + "'" + line +
+                            "' is not of the form 'set Entry = value'.");
         if (rest.find("could not be parsed") != std::string::npos)
-          return InputError(
-            where + "'" +
-            collapse_white_space(line_number <= lines.lines.size() ?
-                                   lines.lines[line_number - 1] :
-                                   "") +
-            "' is not a 'set', 'subsection', 'end' or "
-            "'include' line.");
+          return InputError(where + "'" + line +
+                            "' is not a 'set', 'subsection', 'end' or "
+                            "'include' line.");
         return InputError(where + rest);
       }
     } // namespace
@@ -337,14 +314,6 @@ namespace impm
         throw InputError(name +
                          ": the scene sets no entry (an empty file?); run "
                          "impm without a scene for the default one.");
-      try
-        {
-          check_numbers(prm);
-        }
-      catch (const InputError &error)
-        {
-          throw InputError(name + ": " + error.what());
-        }
     }
 
 
@@ -372,8 +341,10 @@ namespace impm
       const auto        equals = assignment.find('=');
       if (equals == std::string::npos)
         throw InputError(where + "expected \"Subsection/Entry=value\".");
-      const std::string path  = trim(assignment.substr(0, equals));
-      const std::string value = trim(assignment.substr(equals + 1));
+      const std::string path =
+        dealii::Utilities::trim(assignment.substr(0, equals));
+      const std::string value =
+        dealii::Utilities::trim(assignment.substr(equals + 1));
       const auto        slash = path.rfind('/');
       const std::string sections =
         slash == std::string::npos ? "" : path.substr(0, slash + 1);
@@ -416,7 +387,6 @@ namespace impm
         }
       for (unsigned int i = 0; i < parts.size(); ++i)
         prm.leave_subsection();
-      check_numbers(prm);
     }
 
 
@@ -443,7 +413,7 @@ namespace impm
             while (
               std::getline(in, number, pattern.find("List") == 0 ? ',' : '\0'))
               {
-                number = trim(number);
+                number = dealii::Utilities::trim(number);
                 if (number.empty())
                   continue;
                 errno             = 0;

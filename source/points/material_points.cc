@@ -16,8 +16,7 @@ namespace impm
   MaterialPoints<dim>::MaterialPoints(const std::vector<Body<dim>> &bodies,
                                       const BackgroundGrid<dim>    &grid,
                                       const MPI_Comm  communicator,
-                                      const bool      from_checkpoint,
-                                      const RunState *state)
+                                      const RunState *checkpoint_state)
     : bodies(bodies)
     , grid(grid.cartesian())
     , communicator(communicator)
@@ -31,21 +30,22 @@ namespace impm
     particle_handler.initialize(grid.get_triangulation(),
                                 grid.get_mapping(),
                                 property_layout.n_properties);
-    if (!from_checkpoint)
+    if (checkpoint_state == nullptr)
       {
         seed(grid);
         return;
       }
     particle_handler.deserialize();
     particle_handler.update_cached_numbers();
-    mass_at_creation = state->get_double("points.mass at creation");
+    mass_at_creation = checkpoint_state->get_double("points.mass at creation");
     if (static_cast<double>(particle_handler.n_global_particles()) !=
-        state->get_double("points.number"))
+        checkpoint_state->get_double("points.number"))
       throw CollectiveError(
         "The checkpoint's grid holds " +
         std::to_string(particle_handler.n_global_particles()) +
         " material points, its state " +
-        std::to_string(static_cast<long>(state->get_double("points.number"))) +
+        std::to_string(
+          static_cast<long>(checkpoint_state->get_double("points.number"))) +
         ": the checkpoint is damaged.");
   }
 

@@ -100,11 +100,11 @@ namespace impm
 
 
   /**
-   * @brief The full text of @p exception as deal.II prints it (for
-   * `--verbose`).
+   * @brief @p text with every run of white space (line breaks included)
+   * replaced by one blank, and none at either end.
    */
   std::string
-  full_message(const std::exception &exception);
+  collapse_white_space(const std::string &text);
 } // namespace impm
 
 #endif

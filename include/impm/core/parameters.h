@@ -211,9 +211,6 @@ namespace impm
       /** Stop after this many converged load steps (0: run to the full
        *  load); from the command line (--stop-after-step), not the scene. */
       unsigned int stop_after_step = 0;
-      /** Continue from the newest checkpoint in the output directory;
-       *  from the command line (--resume), not the scene. */
-      bool resume = false;
 
       /** @brief Declare the entries (top level). */
       static void

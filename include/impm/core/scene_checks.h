@@ -31,27 +31,6 @@ namespace impm
     void
     check(const Parameters::All<dim> &parameters, const MPI_Comm communicator);
 
-    /**
-     * @brief The estimated peak memory of a run, in bytes, with the
-     * counts behind it.
-     */
-    struct MemoryEstimate
-    {
-      /** Grid cells. */
-      double n_cells = 0.;
-      /** Material points (from the bodies' volumes). */
-      double n_points = 0.;
-      /** Bytes. */
-      double bytes = 0.;
-    };
-
-    /**
-     * @brief The memory a scene needs: per cell and per point costs
-     * measured on this project's runs (doc/benchmarks/scaling.md).
-     */
-    template <int dim>
-    MemoryEstimate
-    estimate_memory(const Parameters::All<dim> &parameters);
   } // namespace SceneChecks
 } // namespace impm
 

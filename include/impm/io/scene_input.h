@@ -43,9 +43,9 @@ namespace impm
 
     /**
      * @brief Check every numeric entry (a number or a list of numbers) of
-     * @p prm: each number must be finite and representable (not a
-     * subnormal that would lose its digits). deal.II's patterns accept
-     * both; the error names the entry and the value.
+     * @p prm, once the scene and the overrides are read: each number must be
+     * finite and representable (not a subnormal that would lose its digits).
+     * deal.II's patterns accept both; the error names the entry and the value.
      */
     void
     check_numbers(const dealii::ParameterHandler &prm);

@@ -53,16 +53,15 @@ namespace impm
      *   material).
      * @param grid The background grid.
      * @param communicator The processes that share the points.
-     * @param from_checkpoint Instead of filling the bodies, take the
-     *   points (and @p state's mass at creation) that a checkpoint attached
-     *   to the grid, which BackgroundGrid has loaded.
-     * @param state The checkpoint's state, if @p from_checkpoint.
+     * @param checkpoint_state If not null, instead of filling the bodies,
+     *   take the points that a checkpoint attached to the grid (which
+     *   BackgroundGrid has loaded) and their mass at creation from this
+     *   state.
      */
     MaterialPoints(const std::vector<Body<dim>> &bodies,
                    const BackgroundGrid<dim>    &grid,
                    const MPI_Comm                communicator,
-                   const bool                    from_checkpoint = false,
-                   const RunState               *state           = nullptr);
+                   const RunState               *checkpoint_state = nullptr);
 
     /**
      * @brief Attach the points to the grid's cells for a checkpoint (call
