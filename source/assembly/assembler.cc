@@ -31,8 +31,10 @@ namespace impm
   bool
   Assembler<dim>::update_stresses(const NodalVector &increment)
   {
-    unsigned int p          = 0;
-    bool         admissible = true;
+    unsigned int       p          = 0;
+    bool               admissible = true;
+    const unsigned int hardening_index =
+      material_points.layout().plastic_multiplier;
     for (const auto &point : material_points.particles())
       {
         PointStep<dim> &step = system.point_steps[p++];
@@ -55,10 +57,22 @@ namespace impm
             continue;
           }
         step.deformation_increment_inverse = invert(dF);
-        step.material->update(
-          PulledBackStress<dim>::embed(dF),
-          PointState<dim>(point.get_properties()).elastic_left_cauchy_green(),
-          step.update);
+        // So does an increment whose trial elastic strain is not positive
+        // definite in floating point (a wild iterate: the model throws).
+        try
+          {
+            step.material->update(PulledBackStress<dim>::embed(dF),
+                                  PointState<dim>(point.get_properties())
+                                    .elastic_left_cauchy_green(),
+                                  hardening_index == PointLayout::absent ?
+                                    0. :
+                                    point.get_properties()[hardening_index],
+                                  step.update);
+          }
+        catch (const ExceptionBase &)
+          {
+            admissible = false;
+          }
       }
     return Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1;
   }
@@ -75,8 +89,12 @@ namespace impm
       {
         const auto                  infos = material_points.infos();
         std::vector<Tensor<1, dim>> forces(infos.size());
+        std::vector<FaceForce<dim>> face_forces;
         for (const auto &effect : force_effects)
-          effect->add_forces(infos, load_factor, forces);
+          {
+            effect->add_forces(infos, load_factor, forces);
+            effect->add_face_forces(infos, load_factor, face_forces);
+          }
         for (unsigned int p = 0; p < infos.size(); ++p)
           {
             const PointStep<dim> &step = system.point_steps[p];
@@ -84,6 +102,31 @@ namespace impm
               for (unsigned int i = 0; i < dim; ++i)
                 external_force.local_element(step.dofs[v * dim + i]) +=
                   step.support.weights[v] * forces[p][i];
+          }
+        if (!face_forces.empty())
+          {
+            // The start-of-step positions and domains of the points.
+            std::vector<std::pair<Point<dim>, Tensor<1, dim>>> domains;
+            domains.reserve(infos.size());
+            for (const auto &point : material_points.particles())
+              domains.emplace_back(
+                point.get_location(),
+                PointState<dim>(point.get_properties()).domain_half_length());
+            std::array<double, PointSupport<dim>::max_nodes> weights;
+            for (const auto &face : face_forces)
+              {
+                const PointStep<dim> &step = system.point_steps[face.point];
+                system.face_weights(face.point,
+                                    domains[face.point].first,
+                                    domains[face.point].second,
+                                    face.axis,
+                                    face.sign,
+                                    weights);
+                for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+                  for (unsigned int i = 0; i < dim; ++i)
+                    external_force.local_element(step.dofs[v * dim + i]) +=
+                      weights[v] * face.force[i];
+              }
           }
       }
     external_force.compress(VectorOperation::add);

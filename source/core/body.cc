@@ -53,6 +53,26 @@ namespace impm
                           "1000",
                           Patterns::Double(0.),
                           "Initial density rho_0 in kg/m^3 (>= 0).");
+        prm.declare_entry("Initial stress",
+                          "zero",
+                          Patterns::Selection("zero|geostatic"),
+                          "The stress the body starts from: zero, or "
+                          "geostatic (vertical stress from the weight of the "
+                          "body above a point, horizontal stress K0 times "
+                          "that; needs gravity along the last axis, acting "
+                          "from the first load step: Gravity/Ramped = "
+                          "false).");
+        prm.declare_entry("K0",
+                          "0.5",
+                          Patterns::Double(0., 10.),
+                          "Geostatic start: ratio of horizontal to vertical "
+                          "stress, in [0, 10] (nu/(1 - nu) for a laterally "
+                          "confined elastic layer).");
+        prm.declare_entry("Surface level",
+                          "",
+                          Patterns::Anything(),
+                          "Geostatic start: elevation (last coordinate) of "
+                          "the free surface; empty: the top of the body.");
         prm.enter_subsection("Material");
         MaterialRegistry::declare_parameters(prm);
         prm.leave_subsection();
@@ -125,12 +145,147 @@ namespace impm
                                 "a polygon needs at least three vertices.");
         check_polygon(prm.get("Vertices"));
       }
-    points_per_direction = prm.get_integer("Points per cell direction");
-    density              = prm.get_double("Density");
+    points_per_direction     = prm.get_integer("Points per cell direction");
+    density                  = prm.get_double("Density");
+    initial_stress.geostatic = prm.get("Initial stress") == "geostatic";
+    initial_stress.k0        = prm.get_double("K0");
+    const std::string level  = Utilities::trim(prm.get("Surface level"));
+    if (level.empty())
+      initial_stress.surface_level = bounding_box().second[dim - 1];
+    else
+      try
+        {
+          std::size_t end              = 0;
+          initial_stress.surface_level = std::stod(level, &end);
+          if (end != level.size() ||
+              !std::isfinite(initial_stress.surface_level))
+            throw std::invalid_argument(level);
+        }
+      catch (const std::exception &)
+        {
+          Parameters::bad_value(name + "/Surface level",
+                                level,
+                                "a number (the elevation of the surface), or "
+                                "empty for the top of the body.");
+        }
     prm.enter_subsection("Material");
-    material = MaterialRegistry::create(prm);
+    material = MaterialRegistry::create(prm, name + "/Material");
     prm.leave_subsection();
     prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  std::vector<std::pair<Point<dim>, double>>
+  Body<dim>::boundary_pieces(const unsigned int axis,
+                             const double       sign,
+                             const double       origin,
+                             const double       spacing) const
+  {
+    std::vector<std::pair<Point<dim>, double>> pieces;
+    if (dim != 2)
+      return pieces;
+    const unsigned int j = 1 - axis;
+    // The cuts of [u0, u1] (u along axis j) at the lattice lines; for each
+    // part, add the piece that @p piece makes of it.
+    const auto cut = [&](const double u0, const double u1, const auto &piece) {
+      const double low = std::min(u0, u1), high = std::max(u0, u1);
+      double       a = low;
+      long m = static_cast<long>(std::floor((low - origin) / spacing)) + 1;
+      while (a < high)
+        {
+          const double b = std::min(high, origin + m * spacing);
+          if (b > a)
+            pieces.push_back(piece(a, b));
+          a = std::max(a, b);
+          ++m;
+        }
+    };
+    const auto at = [&](const double along_axis, const double along_j) {
+      Point<dim> x;
+      x[axis] = along_axis;
+      x[j]    = along_j;
+      return x;
+    };
+
+    switch (shape)
+      {
+        case Shape::box:
+          {
+            const double side =
+              sign > 0 ? upper_corner[axis] : lower_corner[axis];
+            cut(lower_corner[j], upper_corner[j], [&](double a, double b) {
+              return std::make_pair(at(side, 0.5 * (a + b)), b - a);
+            });
+            break;
+          }
+        case Shape::disc:
+          {
+            // The half circle x_axis = c_axis + sign sqrt(R^2 - (u - c_j)^2).
+            const auto angle = [&](const double u) {
+              return std::asin(std::clamp((u - center[j]) / radius, -1., 1.));
+            };
+            cut(
+              center[j] - radius, center[j] + radius, [&](double a, double b) {
+                const double middle = 0.5 * (angle(a) + angle(b));
+                return std::make_pair(at(center[axis] +
+                                           sign * radius * std::cos(middle),
+                                         center[j] + radius * std::sin(middle)),
+                                      radius * (angle(b) - angle(a)));
+              });
+            break;
+          }
+        case Shape::polygon:
+          {
+            double twice_area = 0.;
+            for (unsigned int v = 0; v < vertices.size(); ++v)
+              {
+                const auto &p = vertices[v];
+                const auto &q = vertices[(v + 1) % vertices.size()];
+                twice_area += p[0] * q[1] - q[0] * p[1];
+              }
+            const double orientation = twice_area > 0 ? 1. : -1.;
+            for (unsigned int v = 0; v < vertices.size(); ++v)
+              {
+                const Point<dim>    &p = vertices[v];
+                const Tensor<1, dim> edge =
+                  vertices[(v + 1) % vertices.size()] - p;
+                // Outward normal of a counter-clockwise polygon: (e_y, -e_x).
+                Tensor<1, dim> normal;
+                normal[0] = orientation * edge[1];
+                normal[1] = -orientation * edge[0];
+                if (!(sign * normal[axis] > 0.))
+                  continue;
+                const double length = edge.norm();
+                cut(p[j], p[j] + edge[j], [&](double a, double b) {
+                  const double t = (0.5 * (a + b) - p[j]) / edge[j];
+                  return std::make_pair(Point<dim>(p + t * edge),
+                                        length * (b - a) / std::abs(edge[j]));
+                });
+              }
+            break;
+          }
+        default:
+          break;
+      }
+    return pieces;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  Body<dim>::geostatic_stress(const Point<dim> &x, const double g) const
+  {
+    const double depth =
+      std::max(initial_stress.surface_level - x[dim - 1], 0.);
+    const double          vertical = -density * g * depth;
+    SymmetricTensor<2, 3> stress;
+    for (unsigned int d = 0; d < 3; ++d)
+      stress[d][d] = initial_stress.k0 * vertical;
+    stress[dim - 1][dim - 1] = vertical;
+    return stress;
   }
 
 
@@ -309,6 +464,9 @@ namespace impm
     out << ", " << points_per_direction << "^" << dim
         << " points per cell, density " << density << ", "
         << material->description();
+    if (initial_stress.geostatic)
+      out << ", geostatic start: K0 = " << initial_stress.k0 << ", surface at "
+          << initial_stress.surface_level << " m";
     return out.str();
   }
 

@@ -95,7 +95,9 @@ namespace impm
 
 
     /**
-     * @brief The body force of the points' masses, m g, in equal load steps.
+     * @brief The body force of the points' masses, m g: ramped with the
+     * load factor, or in full from the first load step (for a geostatic
+     * start).
      */
     template <int dim>
     class Gravity : public ForceEffect<dim>
@@ -109,10 +111,18 @@ namespace impm
                           Patterns::List(Patterns::Double(), 2, 3),
                           "Gravitational acceleration in m/s^2, one "
                           "component per dimension.");
+        prm.declare_entry("Ramped",
+                          "true",
+                          Patterns::Bool(),
+                          "true: the weight grows with the load factor over "
+                          "the load steps; false: it acts in full from the "
+                          "first load step (a body with a geostatic initial "
+                          "stress is in equilibrium with it).");
       }
 
       explicit Gravity(ParameterHandler &prm)
         : acceleration(get_tensor<dim>(prm, "Gravity", "Acceleration"))
+        , ramped(prm.get_bool("Ramped"))
       {}
 
       void
@@ -120,18 +130,27 @@ namespace impm
                  const double                               load_factor,
                  std::vector<Tensor<1, dim>> &forces) const override
       {
+        const double factor = ramped ? load_factor : 1.;
         for (unsigned int p = 0; p < points.size(); ++p)
-          forces[p] += (load_factor * points[p].mass) * acceleration;
+          forces[p] += (factor * points[p].mass) * acceleration;
+      }
+
+      Tensor<1, dim>
+      acceleration_from_the_start() const override
+      {
+        return ramped ? Tensor<1, dim>() : acceleration;
       }
 
       std::string
       description() const override
       {
-        return "gravity: acceleration (" + to_string(acceleration) + ") m/s^2";
+        return "gravity: acceleration (" + to_string(acceleration) + ") m/s^2" +
+               (ramped ? "" : ", in full from the first step");
       }
 
     private:
       const Tensor<1, dim> acceleration;
+      const bool           ramped;
     };
 
 
@@ -337,6 +356,15 @@ namespace impm
             area *= spacing[d];
 
         areas.clear();
+        std::vector<std::pair<std::uint64_t, Point<dim>>> boundary_points;
+        const auto in_region = [&](const Point<dim> &x) {
+          bool inside = true;
+          if (has_region)
+            for (unsigned int d = 0; d < dim; ++d)
+              inside =
+                inside && x[d] >= region_lower[d] && x[d] <= region_upper[d];
+          return inside;
+        };
         for (const auto &point : points)
           {
             if (point.body != body)
@@ -345,42 +373,78 @@ namespace impm
             neighbour[direction] += sign * spacing[direction];
             if (bodies[body].contains(neighbour) && grid.contains(neighbour))
               continue;
-            bool inside = true;
-            if (has_region)
-              for (unsigned int d = 0; d < dim; ++d)
-                inside = inside &&
-                         point.initial_position[d] >= region_lower[d] &&
-                         point.initial_position[d] <= region_upper[d];
-            if (inside)
-              areas[point.id] = area;
+            if (in_region(point.initial_position))
+              boundary_points.emplace_back(point.id, point.initial_position);
           }
         // Points move between processes during the run: every process
         // keeps every loaded point.
-        const auto gathered = Utilities::MPI::all_gather(
-          communicator,
-          std::vector<std::pair<std::uint64_t, double>>(areas.begin(),
-                                                        areas.end()));
+        const auto gathered =
+          Utilities::MPI::all_gather(communicator, boundary_points);
+        boundary_points.clear();
         for (const auto &part : gathered)
-          areas.insert(part.begin(), part.end());
+          boundary_points.insert(boundary_points.end(),
+                                 part.begin(),
+                                 part.end());
+        // In the order of the ids, so that ties go the same way on any
+        // number of processes.
+        std::sort(boundary_points.begin(),
+                  boundary_points.end(),
+                  [](const auto &a, const auto &b) {
+                    return a.first < b.first;
+                  });
+
+        // In 2D each point carries the true boundary nearest to it: the
+        // side is cut at the lattice lines and each piece goes to the
+        // nearest boundary point, so the loads add up to the traction times
+        // the length of the side (of a box, a disc or a polygon). In 3D
+        // each point carries its lattice face.
+        const unsigned int other  = dim == 2 ? 1 - direction : 0;
+        const auto         pieces = (dim == 2 && !boundary_points.empty()) ?
+                                      bodies[body].boundary_pieces(direction,
+                                                           sign,
+                                                           grid.lower[other],
+                                                           spacing[other]) :
+                                      std::vector<std::pair<Point<dim>, double>>();
+        if (pieces.empty())
+          for (const auto &point : boundary_points)
+            areas[point.first] = area;
+        for (const auto &piece : pieces)
+          {
+            if (!in_region(piece.first))
+              continue;
+            const auto nearest =
+              std::min_element(boundary_points.begin(),
+                               boundary_points.end(),
+                               [&](const auto &a, const auto &b) {
+                                 return a.second.distance_square(piece.first) <
+                                        b.second.distance_square(piece.first);
+                               });
+            areas[nearest->first] += piece.second;
+          }
         n_points = areas.size();
         if (n_points == 0)
           throw InputError("Traction: no material point of Body " +
                            std::to_string(body + 1) + " lies on its " +
                            Names::face(boundary) + " boundary" +
                            (has_region ? " inside the region" : "") + ".");
-        total_area = n_points * area;
+        total_area = 0.;
+        for (const auto &entry : areas)
+          total_area += entry.second;
       }
 
       void
-      add_forces(const std::vector<MaterialPointInfo<dim>> &points,
-                 const double                               load_factor,
-                 std::vector<Tensor<1, dim>> &forces) const override
+      add_face_forces(const std::vector<MaterialPointInfo<dim>> &points,
+                      const double                               load_factor,
+                      std::vector<FaceForce<dim>> &face_forces) const override
       {
+        const unsigned int axis = Names::face_axis(boundary);
+        const double       sign = Names::face_sign(boundary);
         for (unsigned int p = 0; p < points.size(); ++p)
           {
             const auto area = areas.find(points[p].id);
             if (area != areas.end())
-              forces[p] += (load_factor * area->second) * traction;
+              face_forces.push_back(
+                {p, axis, sign, (load_factor * area->second) * traction});
           }
       }
 
@@ -411,6 +475,24 @@ namespace impm
   IMPM_REGISTER_FORCE_EFFECT(Gravity, "Gravity", true)
   IMPM_REGISTER_FORCE_EFFECT(PointLoad, "Point load", false)
   IMPM_REGISTER_FORCE_EFFECT(Traction, "Traction", false)
+
+  template <int dim>
+  void
+  ForceEffect<dim>::add_forces(const std::vector<MaterialPointInfo<dim>> &,
+                               const double,
+                               std::vector<Tensor<1, dim>> &) const
+  {}
+
+
+
+  template <int dim>
+  void
+  ForceEffect<dim>::add_face_forces(const std::vector<MaterialPointInfo<dim>> &,
+                                    const double,
+                                    std::vector<FaceForce<dim>> &) const
+  {}
+
+
 
   template class ForceEffect<2>;
   template class ForceEffect<3>;

@@ -22,6 +22,18 @@ namespace impm
     {
       stop_signal = signal;
     }
+
+    /** The sum of the effects' accelerations acting from the first step. */
+    template <int dim>
+    Tensor<1, dim>
+    acceleration_from_the_start(
+      const std::vector<std::unique_ptr<ForceEffect<dim>>> &effects)
+    {
+      Tensor<1, dim> sum;
+      for (const auto &effect : effects)
+        sum += effect->acceleration_from_the_start();
+      return sum;
+    }
   } // namespace
 
 
@@ -42,7 +54,11 @@ namespace impm
     , root_out(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , grid(parameters.grid, communicator, checkpoint_grid)
-    , material_points(parameters.bodies, grid, communicator, resume_state)
+    , material_points(parameters.bodies,
+                      grid,
+                      communicator,
+                      acceleration_from_the_start(this->force_effects),
+                      resume_state)
     , ghost_stabilisation(
         parameters.stabilisation.enabled ?
           std::make_unique<GhostStabilisation<dim>>(parameters.stabilisation,

@@ -41,27 +41,11 @@ namespace impm
   void
   HenckyVonMises::update(const Tensor<2, 3>          &dF,
                          const SymmetricTensor<2, 3> &be_n,
-                         ConstitutiveUpdate          &result) const
+                         const double /*hardening_variable*/,
+                         ConstitutiveUpdate &result) const
   {
-    // Trial elastic left Cauchy-Green tensor be_tr = dF be_n dF^T.
-    const Tensor<2, 3>          be_n_full = be_n;
-    const SymmetricTensor<2, 3> be_trial =
-      symmetrize(dF * be_n_full * transpose(dF));
-    const auto eigen = eigenvectors(be_trial);
-
-    std::array<double, 3> strain;
-    double                trace = 0.;
-    for (unsigned int a = 0; a < 3; ++a)
-      {
-        result.trial_eigenvalues[a] = eigen[a].first;
-        for (unsigned int i = 0; i < 3; ++i)
-          result.trial_eigenvectors[i][a] = eigen[a].second[i];
-        AssertThrow(eigen[a].first > 0. && std::isfinite(eigen[a].first),
-                    ExcMessage("Non-positive or non-finite stretch in the "
-                               "trial elastic strain."));
-        strain[a] = 0.5 * std::log(eigen[a].first);
-        trace += strain[a];
-      }
+    std::array<double, 3> strain = decompose_trial_strain(dF, be_n, result);
+    const double          trace  = strain[0] + strain[1] + strain[2];
 
     // Deviatoric trial strain and the yield check on rho = |s| = sqrt(2 J2).
     std::array<double, 3> deviator;
@@ -92,20 +76,10 @@ namespace impm
       }
 
     // Kirchhoff stress and elastic strain, coaxial with be_tr.
-    result.kirchhoff_stress          = 0;
-    result.elastic_left_cauchy_green = 0;
+    std::array<double, 3> stress;
     for (unsigned int a = 0; a < 3; ++a)
-      {
-        const double        tau_a = lambda * trace + 2. * mu * strain[a];
-        const double        b_a   = std::exp(2. * strain[a]);
-        const Tensor<1, 3> &n     = eigen[a].second;
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = i; j < 3; ++j)
-            {
-              result.kirchhoff_stress[i][j] += tau_a * n[i] * n[j];
-              result.elastic_left_cauchy_green[i][j] += b_a * n[i] * n[j];
-            }
-      }
+      stress[a] = lambda * trace + 2. * mu * strain[a];
+    set_coaxial_state(stress, strain, result);
   }
 
 
@@ -154,29 +128,107 @@ namespace impm
                                       const Tensor<2, 3>       &dF_inverse,
                                       Tensor<4, 3>             &M) const
   {
-    // d(dF) = e_k (x) e_q is G = d(dF) dF^-1 = e_k (x) (row q of dF^-1); in
-    // the principal frame G'_ab = Q_ka R_bq with R = Q^T dF^-T, and the
-    // result tau dF^-T rotates back as Q dtau' Q^T dF^-T = Q dtau' R.
-    const Tensor<2, 3> &Q = r.trial_eigenvectors;
-    Tensor<2, 3>        R;
-    for (unsigned int b = 0; b < 3; ++b)
-      for (unsigned int q = 0; q < n_components; ++q)
-        for (unsigned int l = 0; l < n_components; ++l)
-          R[b][q] += Q[l][b] * dF_inverse[q][l];
-    principal_response(r, n_components, R, M);
+    principal_response(r,
+                       n_components,
+                       pull_back_rotation(r.trial_eigenvectors,
+                                          dF_inverse,
+                                          n_components),
+                       M);
+  }
+
+
+
+  std::array<double, 3>
+  decompose_trial_strain(const Tensor<2, 3>          &dF,
+                         const SymmetricTensor<2, 3> &be_n,
+                         ConstitutiveUpdate          &result)
+  {
+    const Tensor<2, 3>          be_n_full = be_n;
+    const SymmetricTensor<2, 3> be_trial =
+      symmetrize(dF * be_n_full * transpose(dF));
+    const auto            eigen = eigenvectors(be_trial);
+    std::array<double, 3> strain;
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        result.trial_eigenvalues[a] = eigen[a].first;
+        for (unsigned int i = 0; i < 3; ++i)
+          result.trial_eigenvectors[i][a] = eigen[a].second[i];
+        AssertThrow(eigen[a].first > 0. && std::isfinite(eigen[a].first),
+                    ExcMessage("Non-positive or non-finite stretch in the "
+                               "trial elastic strain."));
+        strain[a] = 0.5 * std::log(eigen[a].first);
+      }
+    return strain;
   }
 
 
 
   void
-  HenckyVonMises::principal_response(const ConstitutiveUpdate &r,
-                                     const unsigned int        n_components,
-                                     const Tensor<2, 3>       &R,
-                                     Tensor<4, 3>             &T) const
+  set_coaxial_state(const std::array<double, 3> &stress,
+                    const std::array<double, 3> &strain,
+                    ConstitutiveUpdate          &result)
   {
-    const std::array<double, 3> &lam = r.trial_eigenvalues;
-    const Tensor<2, 3>          &Q   = r.trial_eigenvectors;
+    const Tensor<2, 3> &Q            = result.trial_eigenvectors;
+    result.kirchhoff_stress          = 0;
+    result.elastic_left_cauchy_green = 0;
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        const double b_a = std::exp(2. * strain[a]);
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = i; j < 3; ++j)
+            {
+              result.kirchhoff_stress[i][j] += stress[a] * Q[i][a] * Q[j][a];
+              result.elastic_left_cauchy_green[i][j] += b_a * Q[i][a] * Q[j][a];
+            }
+      }
+  }
 
+
+
+  Tensor<2, 3>
+  pull_back_rotation(const Tensor<2, 3> &Q,
+                     const Tensor<2, 3> &dF_inverse,
+                     const unsigned int  n_components)
+  {
+    Tensor<2, 3> R;
+    for (unsigned int b = 0; b < 3; ++b)
+      for (unsigned int q = 0; q < n_components; ++q)
+        for (unsigned int l = 0; l < n_components; ++l)
+          R[b][q] += Q[l][b] * dF_inverse[q][l];
+    return R;
+  }
+
+
+
+  SymmetricTensor<2, 3>
+  hencky_elastic_strain_for_stress(const double                 lambda,
+                                   const double                 mu,
+                                   const SymmetricTensor<2, 3> &tau)
+  {
+    const auto            eigen      = eigenvectors(tau);
+    const double          volumetric = trace(tau) / (3. * lambda + 2. * mu);
+    SymmetricTensor<2, 3> be;
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        const double strain =
+          (eigen[a].first - lambda * volumetric) / (2. * mu);
+        be += std::exp(2. * strain) *
+              symmetrize(outer_product(eigen[a].second, eigen[a].second));
+      }
+    return be;
+  }
+
+
+
+  void
+  principal_frame_response(const std::array<double, 3> &lam,
+                           const Tensor<2, 3>          &Q,
+                           const Tensor<2, 3>          &R,
+                           const double                 D[3][3],
+                           const double                 shear[3][3],
+                           const unsigned int           n_components,
+                           Tensor<4, 3>                &T)
+  {
     // theta_ab = d ln(lambda)/d lambda divided differences (symmetric).
     double theta[3][3];
     for (unsigned int a = 0; a < 3; ++a)
@@ -186,10 +238,6 @@ namespace impm
           theta[a][b] = theta[b][a] = log_divided_difference(lam[a], lam[b]);
       }
 
-    const double bulk     = lambda + 2. * mu / 3.;
-    const double shear2   = 2. * mu * r.return_ratio;
-    const double lambda_e = r.plastic ? bulk - shear2 / 3. : lambda;
-
     T = 0;
     for (unsigned int k = 0; k < n_components; ++k)
       for (unsigned int l = 0; l < n_components; ++l)
@@ -197,31 +245,20 @@ namespace impm
           // G'_ab = Q_ka R_bl; d eps'_ab = 1/2 theta_ab (lambda_b G'_ab +
           // lambda_a G'_ba).
           double deps[3][3];
-          double trace = 0.;
           for (unsigned int a = 0; a < 3; ++a)
             for (unsigned int b = 0; b < 3; ++b)
               deps[a][b] =
                 0.5 * theta[a][b] *
                 (lam[b] * Q[k][a] * R[b][l] + lam[a] * Q[k][b] * R[a][l]);
-          for (unsigned int a = 0; a < 3; ++a)
-            trace += deps[a][a];
 
-          // d tau' = D^alg : d eps'. Elastic: lambda tr I + 2 mu d eps.
-          // Plastic: K tr I + 2 mu ratio (dev d eps - n (n : d eps)).
+          // d tau'_aa = D_ab d eps'_bb, d tau'_ab = c_ab d eps'_ab (a != b).
           double dtau[3][3];
-          double n_dot = 0.;
-          if (r.plastic)
-            for (unsigned int a = 0; a < 3; ++a)
-              n_dot += r.flow_direction[a] * deps[a][a];
           for (unsigned int a = 0; a < 3; ++a)
             for (unsigned int b = 0; b < 3; ++b)
-              dtau[a][b] = shear2 * deps[a][b];
-          for (unsigned int a = 0; a < 3; ++a)
-            {
-              dtau[a][a] += lambda_e * trace;
-              if (r.plastic)
-                dtau[a][a] -= shear2 * r.flow_direction[a] * n_dot;
-            }
+              dtau[a][b] = (a == b) ?
+                             D[a][0] * deps[0][0] + D[a][1] * deps[1][1] +
+                               D[a][2] * deps[2][2] :
+                             shear[a][b] * deps[a][b];
 
           // Back to the global frame: T_imkl = Q_ia dtau'_ab R_bm.
           for (unsigned int i = 0; i < n_components; ++i)
@@ -235,6 +272,32 @@ namespace impm
                   row[0] * R[0][m] + row[1] * R[1][m] + row[2] * R[2][m];
             }
         }
+  }
+
+
+
+  void
+  HenckyVonMises::principal_response(const ConstitutiveUpdate &r,
+                                     const unsigned int        n_components,
+                                     const Tensor<2, 3>       &R,
+                                     Tensor<4, 3>             &T) const
+  {
+    // Elastic: lambda 1 (x) 1 + 2 mu I. Plastic: K 1 (x) 1 + 2 mu ratio
+    // (I - 1/3 1 (x) 1 - n (x) n); off the diagonal 2 mu ratio.
+    const double bulk     = lambda + 2. * mu / 3.;
+    const double shear2   = 2. * mu * r.return_ratio;
+    const double lambda_e = r.plastic ? bulk - shear2 / 3. : lambda;
+    double       D[3][3], shear[3][3];
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        {
+          D[a][b] = lambda_e + (a == b ? shear2 : 0.);
+          if (r.plastic)
+            D[a][b] -= shear2 * r.flow_direction[a] * r.flow_direction[b];
+          shear[a][b] = shear2;
+        }
+    principal_frame_response(
+      r.trial_eigenvalues, r.trial_eigenvectors, R, D, shear, n_components, T);
   }
 
 
@@ -268,10 +331,10 @@ namespace impm
 
 
 
-  namespace
+  namespace ElasticConstants
   {
     void
-    declare_elastic_constants(ParameterHandler &prm)
+    declare_parameters(ParameterHandler &prm)
     {
       prm.declare_entry("Young's modulus",
                         "1e6",
@@ -284,25 +347,30 @@ namespace impm
                         "Poisson's ratio, in [-0.999, 0.4999].");
     }
 
-    /** Parse and check E and nu, naming the parameter on bad input. */
     std::pair<double, double>
-    parse_elastic_constants(ParameterHandler &prm)
+    parse_parameters(ParameterHandler &prm, const std::string &path)
     {
       const double E  = prm.get_double("Young's modulus");
       const double nu = prm.get_double("Poisson's ratio");
       if (!(E > 0.))
-        throw InputError("Parameter 'Young's modulus' = '" +
+        throw InputError("Parameter '" + path + "Young's modulus' = '" +
                          prm.get("Young's modulus") +
                          "' is not allowed: it must be > 0.");
       return {E, nu};
     }
+  } // namespace ElasticConstants
 
+
+
+  namespace
+  {
     const bool hencky_registered = MaterialList::register_plugin(
       {"Hencky elastic",
        "Hencky elasticity",
-       [](ParameterHandler &prm) { declare_elastic_constants(prm); },
-       [](ParameterHandler &prm) -> std::unique_ptr<Material> {
-         const auto [E, nu] = parse_elastic_constants(prm);
+       [](ParameterHandler &prm) { ElasticConstants::declare_parameters(prm); },
+       [](ParameterHandler  &prm,
+          const std::string &path) -> std::unique_ptr<Material> {
+         const auto [E, nu] = ElasticConstants::parse_parameters(prm, path);
          return std::make_unique<HenckyVonMises>(
            E, nu, std::numeric_limits<double>::infinity());
        }});
@@ -311,7 +379,7 @@ namespace impm
       {"von Mises",
        "Hencky elasticity with von Mises perfect plasticity",
        [](ParameterHandler &prm) {
-         declare_elastic_constants(prm);
+         ElasticConstants::declare_parameters(prm);
          prm.declare_entry(
            "Yield stress",
            "2e4",
@@ -319,11 +387,12 @@ namespace impm
            "Yield strength rho_y = sqrt(2 J2) at yield, in Pa (> 0). "
            "Perfect plasticity.");
        },
-       [](ParameterHandler &prm) -> std::unique_ptr<Material> {
-         const auto [E, nu]        = parse_elastic_constants(prm);
+       [](ParameterHandler  &prm,
+          const std::string &path) -> std::unique_ptr<Material> {
+         const auto [E, nu] = ElasticConstants::parse_parameters(prm, path);
          const double yield_stress = prm.get_double("Yield stress");
          if (!(yield_stress > 0.))
-           throw InputError("Parameter 'Yield stress' = '" +
+           throw InputError("Parameter '" + path + "Yield stress' = '" +
                             prm.get("Yield stress") +
                             "' is not allowed: it must be > 0.");
          return std::make_unique<HenckyVonMises>(E, nu, yield_stress);
@@ -355,11 +424,11 @@ namespace impm
     }
 
     std::unique_ptr<Material>
-    create(ParameterHandler &prm)
+    create(ParameterHandler &prm, const std::string &path)
     {
       const auto &entry = MaterialList::find(prm.get("Model"));
       prm.enter_subsection(entry.name);
-      auto material = entry.create(prm);
+      auto material = entry.create(prm, path + "/" + entry.name + "/");
       prm.leave_subsection();
       return material;
     }

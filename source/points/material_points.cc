@@ -13,10 +13,12 @@
 namespace impm
 {
   template <int dim>
-  MaterialPoints<dim>::MaterialPoints(const std::vector<Body<dim>> &bodies,
-                                      const BackgroundGrid<dim>    &grid,
-                                      const MPI_Comm  communicator,
-                                      const RunState *checkpoint_state)
+  MaterialPoints<dim>::MaterialPoints(
+    const std::vector<Body<dim>> &bodies,
+    const BackgroundGrid<dim>    &grid,
+    const MPI_Comm                communicator,
+    const Tensor<1, dim>         &gravity_from_the_start,
+    const RunState               *checkpoint_state)
     : bodies(bodies)
     , grid(grid.cartesian())
     , communicator(communicator)
@@ -32,7 +34,7 @@ namespace impm
                                 property_layout.n_properties);
     if (checkpoint_state == nullptr)
       {
-        seed(grid);
+        seed(grid, gravity_from_the_start);
         return;
       }
     particle_handler.deserialize();
@@ -73,9 +75,29 @@ namespace impm
 
   template <int dim>
   void
-  MaterialPoints<dim>::seed(const BackgroundGrid<dim> &background)
+  MaterialPoints<dim>::seed(const BackgroundGrid<dim> &background,
+                            const Tensor<1, dim>      &gravity_from_the_start)
   {
-    using P            = PointProperties<dim>;
+    using P = PointProperties<dim>;
+    // A geostatic start needs gravity along the last axis, downwards, in
+    // full from the first step.
+    const double g = -gravity_from_the_start[dim - 1];
+    for (const auto &body : bodies)
+      if (body.initial_stress.geostatic)
+        {
+          Tensor<1, dim> lateral = gravity_from_the_start;
+          lateral[dim - 1]       = 0.;
+          if (!(g > 0.) || lateral.norm() != 0.)
+            throw InputError(
+              "Parameter '" + body.name +
+              "/Initial stress' = 'geostatic' needs gravity along the " +
+              (dim == 2 ? "-y" : "-z") +
+              " axis acting in full from the first load step: set "
+              "Gravity/Enabled = true, Gravity/Ramped = false and a downward "
+              "Gravity/Acceleration.");
+        }
+    std::string outside_yield_surface;
+
     double cell_volume = 1.;
     for (unsigned int d = 0; d < dim; ++d)
       cell_volume *= grid.cell_size[d];
@@ -153,6 +175,45 @@ namespace impm
                       }
                   for (unsigned int d = 0; d < dim; ++d)
                     properties[P::initial_position + d] = position[d];
+                  if (body.initial_stress.geostatic)
+                    {
+                      const MutablePointState<dim> state{
+                        ArrayView<double>(properties)};
+                      const SymmetricTensor<2, 3> stress =
+                        body.geostatic_stress(position, g);
+                      const SymmetricTensor<2, 3> elastic_strain =
+                        body.material->elastic_strain_for_stress(stress);
+                      state.set_kirchhoff_stress(stress);
+                      state.set_elastic_left_cauchy_green(elastic_strain);
+                      // The start must lie inside the yield surface.
+                      ConstitutiveUpdate start;
+                      body.material->update(unit_symmetric_tensor<3>(),
+                                            elastic_strain,
+                                            start);
+                      if (start.plastic && outside_yield_surface.empty())
+                        {
+                          std::ostringstream message;
+                          message
+                            << body.name << ": the geostatic stress with K0 = "
+                            << body.initial_stress.k0 << " lies outside the "
+                            << "yield surface of its material at (" << position
+                            << "), "
+                            << body.initial_stress.surface_level -
+                                 position[dim - 1]
+                            << " m deep (" << body.material->description()
+                            << "); choose a K0 nearer 1 or a stronger "
+                               "material.";
+                          outside_yield_surface = message.str();
+                        }
+                    }
+                  else
+                    {
+                      const MutablePointState<dim> state{
+                        ArrayView<double>(properties)};
+                      state.set_kirchhoff_stress(SymmetricTensor<2, 3>());
+                      state.set_elastic_left_cauchy_green(
+                        unit_symmetric_tensor<3>());
+                    }
                   particle_handler.insert_particle(
                     position,
                     reference,
@@ -163,6 +224,16 @@ namespace impm
             }
         }
     throw_if_any_failed(overlap, communicator);
+    if (Utilities::MPI::logical_or(!outside_yield_surface.empty(),
+                                   communicator))
+      {
+        // The message of the lowest process that has one.
+        const auto messages =
+          Utilities::MPI::all_gather(communicator, outside_yield_surface);
+        for (const auto &message : messages)
+          if (!message.empty())
+            throw InputError(message);
+      }
     Utilities::MPI::sum(points_of_body, communicator, points_of_body);
     for (unsigned int b = 0; b < bodies.size(); ++b)
       if (points_of_body[b] == 0)

@@ -98,6 +98,14 @@ namespace impm
                         Patterns::Integer(0),
                         "Number of points, lowest ids first, whose final "
                         "state the test summary prints.");
+      prm.declare_entry("Minimum Newton order",
+                        "1.7",
+                        Patterns::Double(1., 2.),
+                        "The observed Newton order near the solution that "
+                        "the test summary requires of every step, in [1, 2] "
+                        "(quadratic convergence observed as 1.7 or more; a "
+                        "scene whose points change return region in the "
+                        "last iterations may say less, with its reason).");
       prm.declare_entry("Significant digits",
                         "6",
                         Patterns::Integer(3, 17),
@@ -146,9 +154,10 @@ namespace impm
                               const unsigned int dimension)
     {
       prm.enter_subsection("Testing");
-      enabled            = prm.get_bool("Enabled");
-      n_printed_points   = prm.get_integer("Printed points");
-      significant_digits = prm.get_integer("Significant digits");
+      enabled              = prm.get_bool("Enabled");
+      n_printed_points     = prm.get_integer("Printed points");
+      minimum_newton_order = prm.get_double("Minimum Newton order");
+      significant_digits   = prm.get_integer("Significant digits");
       reference_extent =
         get_optional_vector(prm, "Testing", "Reference extent", dimension);
       reference_tolerance = prm.get_double("Reference tolerance");

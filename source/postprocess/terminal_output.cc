@@ -156,12 +156,13 @@ namespace impm
         std::cout << line << '\n';
       // No pair of residuals near the solution (a step converged in one or
       // two iterations, or at round-off) leaves the order unmeasured.
-      std::cout << "observed Newton order near the solution >= 1.7 in every "
-                   "step: "
+      const double minimum_order = parameters.testing.minimum_newton_order;
+      std::cout << "observed Newton order near the solution >= "
+                << minimum_order << " in every step: "
                 << (!NewtonRecord::is_measured(statistics.min_newton_order) ?
                       "not measured" :
-                    statistics.min_newton_order >= 1.7 ? "yes" :
-                                                         "NO")
+                    statistics.min_newton_order >= minimum_order ? "yes" :
+                                                                   "NO")
                 << '\n';
       const auto &testing = parameters.testing;
       std::cout << "scales: L = " << testing.reference_length

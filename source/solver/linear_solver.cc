@@ -19,32 +19,41 @@ namespace impm
   namespace
   {
     /**
-     * @brief The line of an exception's text that says what went wrong:
-     * deal.II's "Additional information" if there is one, else the first
-     * non-empty line.
+     * @brief What an exception's text says went wrong, in one line:
+     * deal.II's "Additional information" paragraph if there is one (its
+     * lines joined), else the first non-empty line.
      */
     std::string
     cause_of(const std::exception &error)
     {
       std::istringstream text(error.what());
-      std::string        line, first;
-      bool               next_is_cause = false;
+      std::string        line, first, cause;
+      bool               in_cause = false;
       while (std::getline(text, line))
         {
           const auto start = line.find_first_not_of(" \t");
           if (start == std::string::npos)
-            continue;
+            {
+              if (!cause.empty())
+                break; // the end of the paragraph
+              continue;
+            }
           line = line.substr(start);
-          if (line.find_first_not_of('-') == std::string::npos)
-            continue; // a rule of dashes
-          if (next_is_cause)
-            return line;
-          if (line.rfind("Additional information:", 0) == 0)
-            next_is_cause = true;
+          if (line.find_first_not_of('-') == std::string::npos ||
+              line.rfind("Stacktrace:", 0) == 0)
+            {
+              if (!cause.empty())
+                break;
+              continue;
+            }
+          if (in_cause)
+            cause += (cause.empty() ? "" : " ") + line;
+          else if (line.rfind("Additional information:", 0) == 0)
+            in_cause = true;
           else if (first.empty())
             first = line;
         }
-      return first;
+      return cause.empty() ? first : cause;
     }
 
 

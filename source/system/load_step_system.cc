@@ -27,6 +27,7 @@ namespace impm
     const MaterialPoints<dim> &material_points,
     const BasisType            basis)
   {
+    this->basis = basis;
     const BasisEvaluator<dim> evaluator(grid.cartesian(), basis);
     point_steps.resize(material_points.n_local_points());
     unsigned int p = 0;
@@ -51,6 +52,23 @@ namespace impm
               step.dofs[v * dim + c] = (*dofs)[c];
           }
       }
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepSystem<dim>::face_weights(
+    const unsigned int                                p,
+    const Point<dim>                                 &position,
+    const Tensor<1, dim>                             &half_length,
+    const unsigned int                                axis,
+    const double                                      sign,
+    std::array<double, PointSupport<dim>::max_nodes> &weights) const
+  {
+    const BasisEvaluator<dim> evaluator(grid.cartesian(), basis);
+    evaluator.face_weights(
+      position, half_length, axis, sign, point_steps[p].support, weights);
   }
 
 

@@ -390,6 +390,65 @@ namespace impm
         }
     }
 
+    /**
+     * @brief The weights that spread a force on one face of a point's
+     * domain over the nodes of its support, @f$\frac{1}{|f|}\int_f N_v\,
+     * dA@f$: the Q1 hat function at the face, @f$x_p \pm l_p@f$, in the
+     * face's normal direction @p axis, and in the other directions the
+     * weights of evaluate() (averages over the domain). They sum to one. A
+     * traction integrated this way balances a uniform stress in the points
+     * exactly (the divergence theorem on the domains). Standard MPM has no
+     * domain: its weights are those of the point.
+     *
+     * @param position, half_length As given to evaluate() for @p support.
+     * @param axis, sign The face: normal direction and side (+1 or -1).
+     * @param support The point's support from evaluate().
+     * @param[out] weights One weight per node of @p support.
+     */
+    void
+    face_weights(
+      const Point<dim>                                 &position,
+      const Tensor<1, dim>                             &half_length,
+      const unsigned int                                axis,
+      const double                                      sign,
+      const PointSupport<dim>                          &support,
+      std::array<double, PointSupport<dim>::max_nodes> &weights) const
+    {
+      for (unsigned int n = 0; n < support.n_nodes; ++n)
+        {
+          if (type == BasisType::standard_mpm)
+            {
+              weights[n] = support.weights[n];
+              continue;
+            }
+          std::uint64_t index  = support.nodes[n];
+          double        weight = 1.;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const long i = static_cast<long>(index % grid.n_nodes(d));
+              index /= grid.n_nodes(d);
+              const double node = grid.node_coordinate(d, i);
+              const double h    = grid.cell_size[d];
+              if (d == axis)
+                weight *=
+                  Basis1D::hat(position[d] + sign * half_length[d] - node, h);
+              else
+                {
+                  double w, derivative;
+                  Basis1D::gimp(position[d] - node,
+                                h,
+                                half_length[d],
+                                grid.lower[d] - node,
+                                grid.upper[d] - node,
+                                w,
+                                derivative);
+                  weight *= w;
+                }
+            }
+          weights[n] = weight;
+        }
+    }
+
   private:
     const CartesianGrid<dim> &grid;
     const BasisType           type;

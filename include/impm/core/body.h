@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <impm/mechanics/material.h>
 
@@ -67,6 +68,20 @@ namespace impm
     volume() const;
 
     /**
+     * @brief In 2D, the part of the boundary whose outward normal points
+     * along @p sign times the axis @p axis (a box's side, half a disc, the
+     * polygon's edges facing that way), cut where it crosses the lines
+     * @f$x_j = o + m\,s@f$ of the other axis j (@p origin o, @p spacing
+     * s): each piece's midpoint and length. Their lengths add up to the
+     * length of that part of the boundary, to round-off. Empty in 3D.
+     */
+    std::vector<std::pair<Point<dim>, double>>
+    boundary_pieces(const unsigned int axis,
+                    const double       sign,
+                    const double       origin,
+                    const double       spacing) const;
+
+    /**
      * @brief A one-line description for the start-up report and summary.
      */
     std::string
@@ -107,6 +122,28 @@ namespace impm
     double density = 0.;
     /** The body's constitutive model. */
     std::shared_ptr<Material> material;
+
+    /** @brief The stress a body starts from. */
+    struct InitialStress
+    {
+      /** Geostatic (true) or zero (false). */
+      bool geostatic = false;
+      /** Ratio K0 of horizontal to vertical stress. */
+      double k0 = 0.5;
+      /** Elevation of the free surface along the last axis. */
+      double surface_level = 0.;
+    };
+    /** The initial stress. */
+    InitialStress initial_stress;
+
+    /**
+     * @brief The geostatic Kirchhoff stress at @p x under the acceleration
+     * of gravity @p g (along the last axis): vertical @f$-\rho_0 g d@f$ at
+     * the depth d below the surface level (zero above it), horizontal
+     * (and, in plane strain, out of plane) K0 times that.
+     */
+    SymmetricTensor<2, 3>
+    geostatic_stress(const Point<dim> &x, const double g) const;
 
   private:
     /**

@@ -38,6 +38,24 @@ namespace impm
   };
 
   /**
+   * @brief A force on one face of a material point's domain: the share of
+   * a traction that the point's boundary face carries. The assembler
+   * spreads it with BasisEvaluator::face_weights().
+   */
+  template <int dim>
+  struct FaceForce
+  {
+    /** Index of the point in the solver's order. */
+    unsigned int point;
+    /** Normal direction of the face. */
+    unsigned int axis;
+    /** Side of the face, +1 or -1. */
+    double sign;
+    /** The force. */
+    Tensor<1, dim> force;
+  };
+
+  /**
    * @brief A physical effect that loads the material points: gravity, point
    * loads, tractions. Each is a class with its own parameter subsection,
    * registered by name; a scene switches it on with `Enabled = true` in that
@@ -76,13 +94,36 @@ namespace impm
     virtual void
     add_forces(const std::vector<MaterialPointInfo<dim>> &points,
                const double                               load_factor,
-               std::vector<Tensor<1, dim>>               &forces) const = 0;
+               std::vector<Tensor<1, dim>>               &forces) const;
+
+    /**
+     * @brief Add this effect's forces on faces of the points' domains at
+     * @p load_factor (tractions); none by default.
+     * @param points This process's points, in the solver's order.
+     * @param load_factor Between 0 and 1.
+     * @param[in,out] face_forces The list to append to.
+     */
+    virtual void
+    add_face_forces(const std::vector<MaterialPointInfo<dim>> &points,
+                    const double                               load_factor,
+                    std::vector<FaceForce<dim>> &face_forces) const;
 
     /**
      * @brief A one-line description with the parameters.
      */
     virtual std::string
     description() const = 0;
+
+    /**
+     * @brief The acceleration of a body force this effect applies in full
+     * from the first load step on (not ramped): what a geostatic start is
+     * in equilibrium with. Zero for every effect but an unramped gravity.
+     */
+    virtual Tensor<1, dim>
+    acceleration_from_the_start() const
+    {
+      return Tensor<1, dim>();
+    }
   };
 
   /**

@@ -378,6 +378,8 @@ namespace impm
       bool enabled;
       /** Number of points (by id) whose state is printed at the end. */
       unsigned int n_printed_points;
+      /** The observed Newton order every step must reach. */
+      double minimum_newton_order;
       /** Significant digits of the printed points' numbers. */
       unsigned int significant_digits;
       /** Expected upper corner of the final points' bounding box (empty:

@@ -42,7 +42,99 @@ namespace impm
     double return_ratio = 1.;
     /** Unit deviatoric flow direction in the principal frame when plastic. */
     std::array<double, 3> flow_direction = {{0., 0., 0.}};
+    /**
+     * The hardening variable at the start of the step, as update() received
+     * it (the point's accumulated plastic multiplier); models with hardening
+     * need it again in their tangent.
+     */
+    double hardening_variable = 0.;
   };
+
+  /**
+   * @brief The response of an isotropic function of the trial logarithmic
+   * strain, @f$\tau = \sum_a \tau_a(\varepsilon^{tr})\, n_a \otimes
+   * n_a@f$, to perturbations of the deformation increment: the step from a
+   * principal-space tangent to the full tangent, shared by all models.
+   *
+   * For the perturbation (k, l) the principal-frame gradient is
+   * @f$G'_{ab} = Q_{ka} R_{bl}@f$, the change of the trial strain
+   * @f$d\varepsilon'_{ab} = \tfrac12 \theta_{ab} (\lambda_b G'_{ab} +
+   * \lambda_a G'_{ba})@f$ with the divided differences @f$\theta@f$ of the
+   * logarithm, and the change of stress @f$d\tau'_{aa} = \sum_b D_{ab}\,
+   * d\varepsilon'_{bb}@f$ on the diagonal, @f$d\tau'_{ab} = c_{ab}\,
+   * d\varepsilon'_{ab}@f$ off it. The result is @f$T_{imkl} =
+   * Q_{ia}\,d\tau'_{ab}\,R_{bm}@f$: with @f$R = Q^T@f$ the tangent
+   * @f$\mathcal C@f$, with @f$R = Q^T \Delta F^{-T}@f$ the material part of
+   * the pulled-back tangent.
+   *
+   * @param trial_eigenvalues Eigenvalues @f$\lambda_a@f$ of @f$b^e_{tr}@f$.
+   * @param Q Its eigenvectors, one per column.
+   * @param R The rotation of the perturbation (see above).
+   * @param D Principal algorithmic tangent, @f$D_{ab} = \partial\tau_a /
+   *   \partial \varepsilon^{tr}_b@f$.
+   * @param shear Off-diagonal coefficients @f$c_{ab}@f$ (a != b; for
+   *   distinct strains @f$(\tau_a - \tau_b)/(\varepsilon_a -
+   *   \varepsilon_b)@f$).
+   * @param n_components 2 in plane strain, 3 in 3D.
+   * @param[out] T The response; entries with an index at or above
+   *   @p n_components are not set.
+   */
+  /**
+   * @brief The spectral decomposition of the trial elastic left
+   * Cauchy-Green tensor @f$b^e_{tr} = \Delta F\, b^e_n\, \Delta F^T@f$
+   * into @p result's trial eigenvalues and eigenvectors (descending).
+   * Throws if an eigenvalue is not positive and finite (an iterate far from
+   * the solution), which fails the Newton iteration.
+   * @return The trial logarithmic strains @f$\tfrac12 \ln \lambda_a@f$.
+   */
+  std::array<double, 3>
+  decompose_trial_strain(const Tensor<2, 3>          &deformation_increment,
+                         const SymmetricTensor<2, 3> &previous_elastic_strain,
+                         ConstitutiveUpdate          &result);
+
+  /**
+   * @brief Set @p result's Kirchhoff stress and elastic left Cauchy-Green
+   * tensor from principal values along its trial eigenvectors:
+   * @f$\tau = \sum_a \tau_a n_a \otimes n_a@f$, @f$b^e = \sum_a
+   * \exp(2 \varepsilon_a) n_a \otimes n_a@f$.
+   */
+  void
+  set_coaxial_state(const std::array<double, 3> &principal_stress,
+                    const std::array<double, 3> &principal_elastic_strain,
+                    ConstitutiveUpdate          &result);
+
+  /**
+   * @brief The rotation @f$R = Q^T \Delta F^{-T}@f$ that makes
+   * principal_frame_response() give the material part of the pulled-back
+   * tangent: a perturbation @f$d(\Delta F) = e_k \otimes e_q@f$ is
+   * @f$G = e_k \otimes@f$ (row q of @f$\Delta F^{-1}@f$), in the principal
+   * frame @f$G'_{ab} = Q_{ka} R_{bq}@f$, and @f$\tau \Delta F^{-T}@f$
+   * rotates back as @f$Q\, d\tau'\, R@f$.
+   */
+  Tensor<2, 3>
+  pull_back_rotation(const Tensor<2, 3> &Q,
+                     const Tensor<2, 3> &deformation_increment_inverse,
+                     const unsigned int  n_components);
+
+  /**
+   * @brief Hencky elasticity inverted: the @f$b^e = \exp(2\varepsilon^e)@f$
+   * with @f$\tau = \lambda\,\mathrm{tr}\,\varepsilon^e\, I + 2\mu\,
+   * \varepsilon^e@f$.
+   */
+  SymmetricTensor<2, 3>
+  hencky_elastic_strain_for_stress(
+    const double                 lambda,
+    const double                 mu,
+    const SymmetricTensor<2, 3> &kirchhoff_stress);
+
+  void
+  principal_frame_response(const std::array<double, 3> &trial_eigenvalues,
+                           const Tensor<2, 3>          &Q,
+                           const Tensor<2, 3>          &R,
+                           const double                 D[3][3],
+                           const double                 shear[3][3],
+                           const unsigned int           n_components,
+                           Tensor<4, 3>                &T);
 
   /**
    * @brief Interface of a constitutive model for finite strain with a
@@ -64,12 +156,27 @@ namespace impm
      *
      * @param deformation_increment @f$\Delta F@f$ (3x3).
      * @param previous_elastic_strain @f$b^e_n@f$.
+     * @param hardening_variable The point's accumulated plastic multiplier
+     *   at the start of the step (read by models with hardening only).
      * @param[out] result The new stress and state.
      */
     virtual void
     update(const Tensor<2, 3>          &deformation_increment,
            const SymmetricTensor<2, 3> &previous_elastic_strain,
+           const double                 hardening_variable,
            ConstitutiveUpdate          &result) const = 0;
+
+    /**
+     * @brief The update of a point without hardening history (a hardening
+     * variable of zero).
+     */
+    void
+    update(const Tensor<2, 3>          &deformation_increment,
+           const SymmetricTensor<2, 3> &previous_elastic_strain,
+           ConstitutiveUpdate          &result) const
+    {
+      update(deformation_increment, previous_elastic_strain, 0., result);
+    }
 
     /**
      * @brief The tangent @f$\mathcal C_{imkl}@f$ of the last update, for
@@ -126,6 +233,15 @@ namespace impm
     }
 
     /**
+     * @brief The elastic left Cauchy-Green tensor @f$b^e@f$ whose stress is
+     * @p kirchhoff_stress: the elastic law inverted, to start a point from
+     * a given stress (a geostatic start).
+     */
+    virtual SymmetricTensor<2, 3>
+    elastic_strain_for_stress(
+      const SymmetricTensor<2, 3> &kirchhoff_stress) const = 0;
+
+    /**
      * @brief A one-line description of the model and its parameters.
      */
     virtual std::string
@@ -159,9 +275,13 @@ namespace impm
                    const double poissons_ratio,
                    const double yield_stress);
 
+    using Material::update;
+
+    /** The radial return; @p hardening_variable is not read. */
     void
     update(const Tensor<2, 3>          &deformation_increment,
            const SymmetricTensor<2, 3> &previous_elastic_strain,
+           const double                 hardening_variable,
            ConstitutiveUpdate          &result) const override;
 
     void
@@ -196,6 +316,13 @@ namespace impm
       return true;
     }
 
+    SymmetricTensor<2, 3>
+    elastic_strain_for_stress(
+      const SymmetricTensor<2, 3> &kirchhoff_stress) const override
+    {
+      return hencky_elastic_strain_for_stress(lambda, mu, kirchhoff_stress);
+    }
+
     std::string
     description() const override;
 
@@ -204,11 +331,9 @@ namespace impm
 
   private:
     /**
-     * @brief The response to perturbations given in the principal frame of
-     * the trial strain: for the perturbation (k, l) the principal-frame
-     * gradient is @f$G'_{ab} = Q_{ka} R_{bl}@f$, and the result is
-     * @f$T_{imkl} = Q_{ia}\,d\tau'_{ab}\,R_{bm}@f$. tangent() uses
-     * @f$R = Q^T@f$, pulled_back_tangent() @f$R = Q^T \Delta F^{-T}@f$.
+     * @brief principal_frame_response() with this model's principal
+     * tangent: tangent() uses @f$R = Q^T@f$, pulled_back_tangent()
+     * @f$R = Q^T \Delta F^{-T}@f$.
      */
     void
     principal_response(const ConstitutiveUpdate &result,
@@ -248,11 +373,32 @@ namespace impm
    * @brief The material models, registered by name.
    *
    * Each model registers a name, a function that declares its parameters in
-   * the subsection of that name and a function that creates it from them.
+   * the subsection of that name and a function that creates it from them
+   * (given also that subsection's path, "Body 1/Material/von Mises/", for
+   * its messages).
    * The names form the `Patterns::Selection` of the scene's `Model` entry,
    * so a misspelt name is an error that lists the known ones.
    */
-  using MaterialList = PluginList<Material, ParameterHandler &>;
+  using MaterialList =
+    PluginList<Material, ParameterHandler &, const std::string &>;
+
+  /**
+   * @brief The elastic constants every model declares: `Young's modulus`
+   * and `Poisson's ratio`.
+   */
+  namespace ElasticConstants
+  {
+    /** @brief Declare both entries in the current subsection. */
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * @brief Read and check them: {E, nu}, with one line naming the entry
+     * (after @p path, the subsection's path) when E is not positive.
+     */
+    std::pair<double, double>
+    parse_parameters(ParameterHandler &prm, const std::string &path);
+  } // namespace ElasticConstants
 
   /**
    * @brief The `Model` entry of a body's "Material" subsection.
@@ -267,10 +413,11 @@ namespace impm
     declare_parameters(ParameterHandler &prm);
 
     /**
-     * @brief Create the model named by `Model` in the current subsection.
+     * @brief Create the model named by `Model` in the current subsection,
+     * whose path (for messages) is @p path ("Body 1/Material").
      */
     std::unique_ptr<Material>
-    create(ParameterHandler &prm);
+    create(ParameterHandler &prm, const std::string &path);
   } // namespace MaterialRegistry
 } // namespace impm
 

@@ -53,6 +53,9 @@ namespace impm
      *   material).
      * @param grid The background grid.
      * @param communicator The processes that share the points.
+     * @param gravity_from_the_start The acceleration of gravity acting in
+     *   full from the first load step (zero if none): the bodies with a
+     *   geostatic start take their stress from it.
      * @param checkpoint_state If not null, instead of filling the bodies,
      *   take the points that a checkpoint attached to the grid (which
      *   BackgroundGrid has loaded) and their mass at creation from this
@@ -61,6 +64,7 @@ namespace impm
     MaterialPoints(const std::vector<Body<dim>> &bodies,
                    const BackgroundGrid<dim>    &grid,
                    const MPI_Comm                communicator,
+                   const Tensor<1, dim>         &gravity_from_the_start,
                    const RunState               *checkpoint_state = nullptr);
 
     /**
@@ -191,7 +195,8 @@ namespace impm
   private:
     /** Seed the points of every body in the locally owned cells. */
     void
-    seed(const BackgroundGrid<dim> &grid);
+    seed(const BackgroundGrid<dim> &grid,
+         const Tensor<1, dim>      &gravity_from_the_start);
 
     const std::vector<Body<dim>>   &bodies;
     const CartesianGrid<dim>       &grid;

@@ -70,6 +70,25 @@ namespace impm
                    const BasisType            basis);
 
     /**
+     * @brief The weights of a force on one face of point @p p's domain over
+     * the nodes of its support (BasisEvaluator::face_weights()), with the
+     * basis of the last evaluate_basis().
+     * @param p The point's index in point_steps.
+     * @param position, half_length The point's start-of-step position and
+     *   domain half-lengths.
+     * @param axis, sign The face.
+     * @param[out] weights One per node of the point's support.
+     */
+    void
+    face_weights(
+      const unsigned int                                p,
+      const Point<dim>                                 &position,
+      const Tensor<1, dim>                             &half_length,
+      const unsigned int                                axis,
+      const double                                      sign,
+      std::array<double, PointSupport<dim>::max_nodes> &weights) const;
+
+    /**
      * @brief Number the system's DoFs, group the points, let the ghost
      * stabilisation (if any) choose its faces, and make the sparsity
      * pattern, matrix and vectors. Collective.
@@ -160,8 +179,10 @@ namespace impm
     void
     make_assembly_groups();
 
-    const BackgroundGrid<dim>           &grid;
-    const MPI_Comm                       communicator;
+    const BackgroundGrid<dim> &grid;
+    const MPI_Comm             communicator;
+    /** The basis of the last evaluate_basis(). */
+    BasisType                            basis = BasisType::gimp;
     std::vector<types::global_dof_index> index_in_system;
     IndexSet                             owned;
     IndexSet                             relevant;
