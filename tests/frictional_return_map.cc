@@ -51,7 +51,8 @@
 // 8. The apex, e = (0.03, 0.03, 0.02): p = xi c/eta = c cot(phi) =
 //    17320.508076; the multiplier deps_v/eta_bar = 0.312643874.
 
-#include <impm/mechanics/frictional_plasticity.h>
+#include <impm/mechanics/drucker_prager.h>
+#include <impm/mechanics/mohr_coulomb.h>
 
 #include <cmath>
 #include <iomanip>

@@ -12,7 +12,8 @@
 // axes nor those of b^e_n. In plane strain the out-of-plane trial strain
 // comes from F_n.
 
-#include <impm/mechanics/frictional_plasticity.h>
+#include <impm/mechanics/drucker_prager.h>
+#include <impm/mechanics/mohr_coulomb.h>
 #include <impm/mechanics/pulled_back_stress.h>
 
 #include <cmath>

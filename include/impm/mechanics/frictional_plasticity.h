@@ -210,6 +210,33 @@ namespace impm
                      const double                 hardening_slope,
                      PrincipalReturn             &result) const = 0;
 
+    /**
+     * Relative margin of the yield checks: a point returned in the step
+     * before sits on the surface up to round-off, and the choice of branch
+     * must not depend on it (nor on the number of processes).
+     */
+    static constexpr double yield_margin = 1e-10;
+
+    /**
+     * @brief The return to the apex of a cone, shared by the models: the
+     * mean stress @f$p = p_{tr} - K\,\Delta\varepsilon^p_v@f$ reaches
+     * @f$k\,c(\bar\varepsilon^p)@f$ with @f$\bar\varepsilon^p =
+     * \alpha\,\Delta\varepsilon^p_v@f$ (linear, so one division), and
+     * @f$D = K(1 - K/(K + k \alpha H))\, 1 \otimes 1@f$.
+     * @param trial_pressure @f$p_{tr}@f$.
+     * @param apex_ratio k, the apex pressure per unit cohesion.
+     * @param alpha @f$\alpha@f$.
+     * @param cohesion, hardening_slope As for principal_return().
+     * @param[out] result Stresses, tangent, plastic strain, region.
+     */
+    void
+    apex_return(const double     trial_pressure,
+                const double     apex_ratio,
+                const double     alpha,
+                const double     cohesion,
+                const double     hardening_slope,
+                PrincipalReturn &result) const;
+
     /** @brief The elastic principal stresses of the strains @p strain. */
     std::array<double, 3>
     elastic_stress(const std::array<double, 3> &strain) const;
@@ -251,111 +278,6 @@ namespace impm
 
     /** h in @f$\bar\varepsilon^p = h\,\kappa@f$. */
     const double hardening_factor;
-  };
-
-  /**
-   * @brief Drucker-Prager plasticity, @f$\Phi = \sqrt{J_2(\tau)} + \eta\,p
-   * - \xi\,c(\bar\varepsilon^p)@f$ with the flow potential @f$\sqrt{J_2} +
-   * \bar\eta\,p@f$ (p the mean stress, tension positive), and the returns
-   * to the cone and to its apex (de Souza Neto et al. 2008, box 8.9).
-   *
-   * The constants come from the friction angle @f$\phi@f$, the dilation
-   * angle @f$\psi@f$ and a match to Mohr-Coulomb:
-   * - outer cone (compressive meridians): @f$\eta = 6\sin\phi/(\sqrt3
-   *   (3 - \sin\phi))@f$, @f$\xi = 6\cos\phi/(\sqrt3(3 - \sin\phi))@f$;
-   * - inner cone (tensile meridians): the same with @f$3 + \sin\phi@f$;
-   * - plane strain: the plane-strain collapse load of Mohr-Coulomb with the
-   *   same angles, @f$\bar\eta = \sqrt3\sin\psi/\sqrt{3 + \sin^2\psi}@f$,
-   *   @f$\eta = \sin\phi/d@f$, @f$\xi = \cos\phi/d@f$ with @f$d =
-   *   \sqrt{1 - \bar\eta^2/3} + \bar\eta\sin\phi/3@f$ (from zero plastic
-   *   strain out of the plane; associated flow gives de Souza Neto's
-   *   @f$\eta = 3\tan\phi/\sqrt{9 + 12\tan^2\phi}@f$, zero dilation
-   *   @f$\eta = \sin\phi@f$, @f$\xi = \cos\phi@f$).
-   *   For @f$\bar\eta@f$ the cones use their formula with @f$\psi@f$.
-   * The equivalent plastic strain is @f$\xi\,\kappa@f$.
-   */
-  class DruckerPrager : public PrincipalStressPlasticity
-  {
-  public:
-    /** How the cone is fitted to the Mohr-Coulomb surface. */
-    enum class Match
-    {
-      /** Plane-strain collapse loads of Mohr-Coulomb. */
-      plane_strain,
-      /** Through the compressive meridians (outer cone). */
-      outer_cone,
-      /** Through the tensile meridians (inner cone). */
-      inner_cone
-    };
-
-    /**
-     * @brief Constructor.
-     * @param parameters Elastic constants, cohesion, angles.
-     * @param match The fit of the cone to Mohr-Coulomb.
-     */
-    DruckerPrager(const FrictionalParameters &parameters, const Match match);
-
-    std::string
-    description() const override;
-
-    /** @brief The constants @f$\{\eta, \xi, \bar\eta\}@f$ of a match. */
-    static std::array<double, 3>
-    cone_constants(const double friction_angle,
-                   const double dilation_angle,
-                   const Match  match);
-
-  protected:
-    void
-    principal_return(const std::array<double, 3> &trial_strain,
-                     const double                 cohesion,
-                     const double                 hardening_slope,
-                     PrincipalReturn             &result) const override;
-
-  private:
-    /** The fit. */
-    const Match match;
-    /** @f$\eta@f$, @f$\xi@f$ and @f$\bar\eta@f$. */
-    const std::array<double, 3> constants;
-  };
-
-  /**
-   * @brief Mohr-Coulomb plasticity, @f$\Phi = \tau_1 - \tau_3 + (\tau_1 +
-   * \tau_3)\sin\phi - 2c\cos\phi@f$ with the principal stresses @f$\tau_1
-   * \ge \tau_2 \ge \tau_3@f$ (tension positive) and the flow potential with
-   * @f$\psi@f$ in place of @f$\phi@f$: the returns to a plane, to the edges
-   * @f$\tau_1 = \tau_2@f$ and @f$\tau_2 = \tau_3@f$ and to the apex
-   * (de Souza Neto et al. 2008, boxes 8.4 and 8.5), each with its exact
-   * tangent. With linear hardening every return is a linear solve.
-   * The equivalent plastic strain is @f$2\cos\phi\,\kappa@f$.
-   */
-  class MohrCoulomb : public PrincipalStressPlasticity
-  {
-  public:
-    /** @brief Constructor. */
-    explicit MohrCoulomb(const FrictionalParameters &parameters);
-
-    std::string
-    description() const override;
-
-  protected:
-    void
-    principal_return(const std::array<double, 3> &trial_strain,
-                     const double                 cohesion,
-                     const double                 hardening_slope,
-                     PrincipalReturn             &result) const override;
-
-  private:
-    /**
-     * @brief The return to the planes @p planes at once (one or two), each
-     * given by its larger and smaller principal index; false if a
-     * multiplier came out negative.
-     */
-    bool
-    return_to_planes(const std::array<double, 3>                &trial_stress,
-                     const std::vector<std::array<unsigned, 2>> &planes,
-                     const double                                cohesion,
-                     const double     hardening_slope,
-                     PrincipalReturn &result) const;
   };
 } // namespace impm
 
