@@ -50,6 +50,32 @@
 //    tau = (-1637.662702, -12202.527227, -33332.256278).
 // 8. The apex, e = (0.03, 0.03, 0.02): p = xi c/eta = c cot(phi) =
 //    17320.508076; the multiplier deps_v/eta_bar = 0.312643874.
+//
+// Mohr-Coulomb with a tension cut-off T = 5000 (associated Rankine planes
+// tau_a <= T; lambda + 2G = 1.2e6). Flow on a tension plane is no plastic
+// multiplier of the cohesion (printed 0).
+//
+// 9. One tension plane, e = (0.01, 0, 0): trial (12000, 4000, 4000), Mohr-
+//    Coulomb 8000 + 8000 - 17320.5 < 0; dgamma = 7000/1.2e6, tau = (5000,
+//    4000 - lambda dgamma, same) = (5000, 1666.666667, 1666.666667).
+// 10. Two tension planes, e = (0.01, 0.008, -0.004): trial (13600, 12000,
+//    2400) (Mohr-Coulomb violated too); [1.2e6 4e5; 4e5 1.2e6] dgamma =
+//    (8600, 7000): dgamma = (0.005875, 0.003875), tau_3 = 2400 - lambda
+//    0.00975 = -1500; Mohr-Coulomb at (5000, 5000, -1500) is 8250 - 17320.5
+//    < 0.
+// 11. Three tension planes, e = (0.01, 0.008, 0.006): trial (17600, 16000,
+//    14400); the two-plane return leaves tau_3 = 8500 > T, so tau = (T, T,
+//    T).
+// 12. A Mohr-Coulomb plane with a tension plane, e = (0.02, 0, -0.02):
+//    trial (16000, 0, -16000); the tension plane alone gives (5000,
+//    -3666.67, -19666.67), where Mohr-Coulomb is 17333.3 - 17320.5 > 0.
+//    Checked by the conditions of the return, not a closed form: both
+//    surfaces hold to 1e-8, the plastic strain De^-1 (tau_tr - tau) has no
+//    middle component and splits into dgamma_MC (1 + s_psi, 0, -1 + s_psi)
+//    + dgamma_T (1, 0, 0) with both multipliers >= 0.
+// 13. A cut-off above the apex, T = 1e5 > c cot(phi), cuts nothing: case
+//    4's strain returns to the Mohr-Coulomb apex as in case 4 (17320.508076
+//    each, multiplier 0.155542196).
 
 #include <impm/mechanics/drucker_prager.h>
 #include <impm/mechanics/mohr_coulomb.h>
@@ -92,8 +118,10 @@ namespace
     ConstitutiveUpdate update;
     material.update(dF, unit_symmetric_tensor<3>(), update);
 
+    // The multiplier relative to itself, or to 1e-3 where it is zero (flow
+    // on a tension plane changes no cohesion).
     double error = std::abs(update.plastic_multiplier - expected_multiplier) /
-                   expected_multiplier;
+                   (expected_multiplier > 0. ? expected_multiplier : 1e-3);
     std::cout << name << ": "
               << return_region_name(material.return_region(update)) << std::endl
               << "  stress (kPa):" << std::fixed << std::setprecision(6);
@@ -113,6 +141,7 @@ namespace
                             error,
                             1e-8);
   }
+
 } // namespace
 
 int
@@ -162,4 +191,73 @@ main()
         {{0.03, 0.03, 0.02}},
         {{17320.508075688773, 17320.508075688773, 17320.508075688773}},
         0.31264387415312395);
+
+  const MohrCoulomb cut_off(parameters(), 5000.);
+  check("Mohr-Coulomb, tension cut-off, one plane",
+        cut_off,
+        {{0.01, 0., 0.}},
+        {{5000., 1666.6666666666667, 1666.6666666666667}},
+        0.);
+  check("Mohr-Coulomb, tension cut-off, two planes",
+        cut_off,
+        {{0.01, 0.008, -0.004}},
+        {{5000., 5000., -1500.}},
+        0.);
+  check("Mohr-Coulomb, tension cut-off, three planes",
+        cut_off,
+        {{0.01, 0.008, 0.006}},
+        {{5000., 5000., 5000.}},
+        0.);
+  check("Mohr-Coulomb, tension cut-off above the apex",
+        MohrCoulomb(parameters(), 1e5),
+        {{0.03, 0.03, 0.02}},
+        {{17320.508075688776, 17320.508075688776, 17320.508075688776}},
+        0.15554219633124974);
+  {
+    // Case 12: the conditions of the return at a Mohr-Coulomb plane and a
+    // tension plane.
+    const std::array<double, 3> strain = {{0.02, 0., -0.02}};
+    Tensor<2, 3>                dF;
+    for (unsigned int a = 0; a < 3; ++a)
+      dF[a][a] = std::exp(strain[a]);
+    ConstitutiveUpdate update;
+    cut_off.update(dF, unit_symmetric_tensor<3>(), update);
+    const double lambda = 4e5, G = 4e5, T = 5000.;
+    const double s_phi = 0.5, c_phi = std::sqrt(3.) / 2.;
+    const double s_psi = std::sin(10. * M_PI / 180.);
+    double       tau[3], trial[3], plastic[3];
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        tau[a] = update.kirchhoff_stress[a][a];
+        trial[a] =
+          lambda * (strain[0] + strain[1] + strain[2]) + 2. * G * strain[a];
+      }
+    // De^-1 x = (x - lambda/(3 lambda + 2G) tr x) / 2G.
+    const double trace =
+      (trial[0] - tau[0]) + (trial[1] - tau[1]) + (trial[2] - tau[2]);
+    for (unsigned int a = 0; a < 3; ++a)
+      plastic[a] =
+        ((trial[a] - tau[a]) - lambda / (3. * lambda + 2. * G) * trace) /
+        (2. * G);
+    const double mohr_coulomb =
+      (tau[0] - tau[2] + (tau[0] + tau[2]) * s_phi - 2e4 * c_phi) / 2e4;
+    const double tension   = (tau[0] - T) / T;
+    const double dgamma_mc = plastic[2] / (s_psi - 1.);
+    const double dgamma_t  = plastic[0] - dgamma_mc * (1. + s_psi);
+    std::cout << "Mohr-Coulomb, tension cut-off, plane and tension plane: "
+              << return_region_name(cut_off.return_region(update)) << std::endl
+              << "  stress (kPa):" << std::fixed << std::setprecision(6) << ' '
+              << tau[0] / 1e3 << ' ' << tau[1] / 1e3 << ' ' << tau[2] / 1e3
+              << std::endl
+              << std::defaultfloat;
+    impm_tests::check_below("  on both surfaces",
+                            std::max(std::abs(mohr_coulomb), std::abs(tension)),
+                            1e-8);
+    impm_tests::check_below("  no middle plastic strain (x 1e3)",
+                            std::abs(plastic[1]) * 1e3,
+                            1e-8);
+    std::cout << "  both multipliers >= 0: "
+              << (dgamma_mc >= 0. && dgamma_t >= 0. ? "yes" : "NO")
+              << std::endl;
+  }
 }

@@ -1,10 +1,10 @@
 // The consistent tangent A = dP~/d(dF) of the previously converged
 // formulation for Mohr-Coulomb and Drucker-Prager against central finite
 // differences of P~(dF), in every region of the yield surface (smooth part,
-// edges, apex), with perfect plasticity, hardening and softening, in plane
-// strain (2D) and 3D; the model's direct route to the material part against
-// the generic pull-back of C; and major symmetry, A_ijkq = A_kqij, where the
-// model claims it (associated flow).
+// edges, apex, tension cut-off planes), with perfect plasticity, hardening and
+// softening, in plane strain (2D) and 3D; the model's direct route to the
+// material part against the generic pull-back of C; and major symmetry, A_ijkq
+// = A_kqij, where the model claims it (associated flow).
 //
 // The states are those of frictional_return_map.cc, made general: the
 // previous elastic strain comes from a sheared F_n and the increment has
@@ -179,6 +179,17 @@ namespace
                MohrCoulomb(parameters(10., -2e5, 5e3)),
                {{0.02, -0.04, 0.}},
                0.1);
+    // The tension cut-off T = 5000 (frictional_return_map.cc, cases 9-12):
+    // one, two and three tension planes, a plane with a tension plane.
+    const MohrCoulomb cut_off(parameters(10.), 5000.);
+    check<dim>("Mohr-Coulomb, tension cut-off", cut_off, {{0.01, 0., -0.001}});
+    check<dim>("Mohr-Coulomb, tension cut-off",
+               cut_off,
+               {{0.01, 0.008, -0.004}});
+    check<dim>("Mohr-Coulomb, tension cut-off",
+               cut_off,
+               {{0.01, 0.008, 0.006}});
+    check<dim>("Mohr-Coulomb, tension cut-off", cut_off, {{0.02, 0., -0.02}});
 
     for (const auto match : {DruckerPrager::Match::plane_strain,
                              DruckerPrager::Match::outer_cone,

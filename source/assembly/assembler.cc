@@ -5,8 +5,6 @@
 #include <impm/mechanics/point_stiffness.h>
 #include <impm/mechanics/pulled_back_stress.h>
 
-#include <Epetra_CrsMatrix.h>
-
 #include <algorithm>
 #include <memory>
 #include <type_traits>
@@ -18,10 +16,12 @@ namespace impm
     const MaterialPoints<dim>                            &material_points,
     LoadStepSystem<dim>                                  &system,
     const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
+    FBar<dim>                                            *f_bar,
     const MPI_Comm                                        communicator)
     : material_points(material_points)
     , system(system)
     , force_effects(force_effects)
+    , f_bar(f_bar)
     , communicator(communicator)
   {}
 
@@ -35,6 +35,27 @@ namespace impm
     bool               admissible = true;
     const unsigned int hardening_index =
       material_points.layout().plastic_multiplier;
+    // The return map of one point (once its increment is known).
+    const auto update_point = [&](PointStep<dim>                &step,
+                                  const ArrayView<const double> &properties) {
+      // An increment whose trial elastic strain is not positive definite
+      // in floating point (a wild iterate: the model throws) fails the
+      // Newton solve.
+      try
+        {
+          step.material->update(
+            PulledBackStress<dim>::embed(step.deformation_increment),
+            PointState<dim>(properties).elastic_left_cauchy_green(),
+            hardening_index == PointLayout::absent ?
+              0. :
+              properties[hardening_index],
+            step.update);
+        }
+      catch (const ExceptionBase &)
+        {
+          admissible = false;
+        }
+    };
     for (const auto &point : material_points.particles())
       {
         PointStep<dim> &step = system.point_steps[p++];
@@ -57,22 +78,18 @@ namespace impm
             continue;
           }
         step.deformation_increment_inverse = invert(dF);
-        // So does an increment whose trial elastic strain is not positive
-        // definite in floating point (a wild iterate: the model throws).
-        try
-          {
-            step.material->update(PulledBackStress<dim>::embed(dF),
-                                  PointState<dim>(point.get_properties())
-                                    .elastic_left_cauchy_green(),
-                                  hardening_index == PointLayout::absent ?
-                                    0. :
-                                    point.get_properties()[hardening_index],
-                                  step.update);
-          }
-        catch (const ExceptionBase &)
-          {
-            admissible = false;
-          }
+        // Without F-bar each point is updated at once; with it, after the
+        // patches' mean volume changes are known.
+        if (f_bar == nullptr)
+          update_point(step, point.get_properties());
+      }
+    if (f_bar != nullptr &&
+        Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1)
+      {
+        f_bar->average(system.point_steps);
+        p = 0;
+        for (const auto &point : material_points.particles())
+          update_point(system.point_steps[p++], point.get_properties());
       }
     return Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1;
   }
@@ -154,8 +171,13 @@ namespace impm
         const MaterialPoints<dim>                            &material_points,
         LoadStepSystem<dim>                                  &system,
         const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
+        FBar<dim>                                            *f_bar,
         const MPI_Comm                                        communicator)
-        : Assembler<dim>(material_points, system, force_effects, communicator)
+        : Assembler<dim>(material_points,
+                         system,
+                         force_effects,
+                         f_bar,
+                         communicator)
       {}
 
       void
@@ -198,119 +220,70 @@ namespace impm
       add_stiffness(TrilinosWrappers::SparseMatrix &matrix) const override
       {
         const auto &point_steps = this->system.point_steps;
+        FBar<dim>  *f_bar       = this->f_bar;
+        // The map of the statement's gradients to the current
+        // configuration (F-bar only).
+        const auto gradient_map = [&](const unsigned int p) {
+          if constexpr (maps_gradients)
+            return unit_symmetric_tensor<dim>();
+          else
+            return point_steps[p].deformation_increment_inverse;
+        };
+        const auto gradients_of = [&](const unsigned int p) {
+          return maps_gradients ? mapped_gradients[p].data() :
+                                  point_steps[p].support.gradients.data();
+        };
         // One support's dense matrix (52 kB in 3D): on the heap.
         const auto stiffness = std::make_unique<PointStiffness<dim>>();
-        std::array<double, PointStiffness<dim>::max_dofs> row_values;
         for (const AssemblyGroup &group : this->system.assembly_groups)
           {
             // The group's matrix over all its support's DoFs; the rows and
             // columns in the linear system are picked when it is added.
-            const bool symmetric = std::all_of(
-              group.points.begin(),
-              group.points.end(),
-              [&](const unsigned int p) {
-                return point_steps[p].material->has_symmetric_tangent();
-              });
+            // F-bar's point term has no major symmetry.
+            const bool symmetric =
+              f_bar == nullptr &&
+              std::all_of(
+                group.points.begin(),
+                group.points.end(),
+                [&](const unsigned int p) {
+                  return point_steps[p].material->has_symmetric_tangent();
+                });
             stiffness->reset(point_steps[group.points.front()].support.n_nodes,
                              symmetric ? TangentSymmetry::major :
                                          TangentSymmetry::general);
             for (const unsigned int p : group.points)
               {
                 const PointStep<dim> &step = point_steps[p];
-                const Tensor<1, dim> *gradients =
-                  maps_gradients ? mapped_gradients[p].data() :
-                                   step.support.gradients.data();
-                stiffness->add(Form::tangent(*step.material,
-                                             step.update,
-                                             step.deformation_increment_inverse,
-                                             step.initial_volume),
-                               gradients,
+                Tensor<4, dim>        tangent =
+                  Form::tangent(*step.material,
+                                step.update,
+                                step.deformation_increment_inverse,
+                                step.initial_volume);
+                if (f_bar != nullptr)
+                  tangent = f_bar->point_tangent(
+                    p,
+                    tangent,
+                    Form::force_stress(step.update,
+                                       step.deformation_increment_inverse,
+                                       step.initial_volume),
+                    gradient_map(p));
+                stiffness->add(tangent,
+                               gradients_of(p),
                                group.in_system.data());
               }
-            add_to_matrix(group, *stiffness, matrix, row_values);
+            block_adder.add(
+              group.rows.data(),
+              group.rows.size(),
+              [&](const unsigned int a, const unsigned int b) {
+                return stiffness->entry(group.local[a], group.local[b]);
+              },
+              matrix);
           }
-      }
-
-    private:
-      /**
-       * Add the group's rows and columns of @p stiffness to @p matrix. Rows
-       * this process owns are added in place: the group's columns, sorted
-       * by their local index, are found by one merge walk along the
-       * matrix's sorted row (instead of a binary search and a global-to-
-       * local lookup per entry, which cost 40 % of the 3D collapse's run
-       * time). Rows of other processes go through the matrix's add().
-       */
-      static void
-      add_to_matrix(
-        const AssemblyGroup                               &group,
-        const PointStiffness<dim>                         &stiffness,
-        TrilinosWrappers::SparseMatrix                    &matrix,
-        std::array<double, PointStiffness<dim>::max_dofs> &row_values)
-      {
-        // The values are changed through the row views of the (const)
-        // matrix deal.II exposes.
-        const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
-        const unsigned int      n      = group.rows.size();
-        // The group's columns in the matrix's local numbering, sorted.
-        std::array<std::pair<int, unsigned int>, PointStiffness<dim>::max_dofs>
-          columns;
-        for (unsigned int b = 0; b < n; ++b)
-          columns[b] = {epetra.LCID(static_cast<int>(group.rows[b])), b};
-        std::sort(columns.begin(), columns.begin() + n);
-        std::array<int, PointStiffness<dim>::max_dofs> positions;
-        bool                                           have_positions   = false;
-        int                                            positions_length = 0;
-        for (unsigned int a = 0; a < n; ++a)
-          {
-            const int local_row = epetra.LRID(static_cast<int>(group.rows[a]));
-            if (local_row < 0)
-              {
-                for (unsigned int b = 0; b < n; ++b)
-                  row_values[b] =
-                    stiffness.entry(group.local[a], group.local[b]);
-                matrix.add(group.rows[a],
-                           n,
-                           group.rows.data(),
-                           row_values.data(),
-                           /*elide_zero_values=*/false,
-                           /*col_indices_are_sorted=*/true);
-                continue;
-              }
-            int     length  = 0;
-            double *values  = nullptr;
-            int    *indices = nullptr;
-            epetra.ExtractMyRowView(local_row, length, values, indices);
-            // The rows of one node's components have the same columns:
-            // the previous row's positions are tried first.
-            bool known = have_positions && length == positions_length;
-            for (unsigned int c = 0; c < n && known; ++c)
-              known = indices[positions[c]] == columns[c].first;
-            if (!known)
-              {
-                int position = 0;
-                for (unsigned int c = 0; c < n; ++c)
-                  {
-                    while (position < length &&
-                           indices[position] < columns[c].first)
-                      ++position;
-                    // Checked in release builds too: an entry missing from
-                    // the sparsity pattern must not become a write past
-                    // the row.
-                    AssertThrow(position < length &&
-                                  indices[position] == columns[c].first,
-                                ExcMessage("The stiffness of a material point "
-                                           "has an entry outside the "
-                                           "system's sparsity pattern."));
-                    positions[c] = position;
-                  }
-                have_positions   = true;
-                positions_length = length;
-              }
-            const unsigned int row = group.local[a];
-            for (unsigned int c = 0; c < n; ++c)
-              values[positions[c]] +=
-                stiffness.entry(row, group.local[columns[c].second]);
-          }
+        if (f_bar != nullptr)
+          f_bar->add_patch_stiffness(point_steps,
+                                     gradients_of,
+                                     gradient_map,
+                                     matrix);
       }
 
     private:
@@ -320,6 +293,8 @@ namespace impm
        */
       std::vector<std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>>
         mapped_gradients;
+      /** Adds the groups' blocks to the matrix. */
+      mutable DenseBlockAdder block_adder;
     };
   } // namespace
 
@@ -332,22 +307,19 @@ namespace impm
     const MaterialPoints<dim>                            &material_points,
     LoadStepSystem<dim>                                  &system,
     const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
+    FBar<dim>                                            *f_bar,
     const MPI_Comm                                        communicator)
   {
     switch (formulation)
       {
         case Parameters::Formulation::updated_lagrangian:
           return std::make_unique<
-            FormAssembler<dim, UpdatedLagrangianForm<dim>>>(material_points,
-                                                            system,
-                                                            force_effects,
-                                                            communicator);
+            FormAssembler<dim, UpdatedLagrangianForm<dim>>>(
+            material_points, system, force_effects, f_bar, communicator);
         default:
           return std::make_unique<
-            FormAssembler<dim, PreviouslyConvergedForm<dim>>>(material_points,
-                                                              system,
-                                                              force_effects,
-                                                              communicator);
+            FormAssembler<dim, PreviouslyConvergedForm<dim>>>(
+            material_points, system, force_effects, f_bar, communicator);
       }
   }
 

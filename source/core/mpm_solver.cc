@@ -65,11 +65,14 @@ namespace impm
                                                     grid,
                                                     parameters.bodies) :
           nullptr)
+    , f_bar(parameters.material_points.f_bar ? std::make_unique<FBar<dim>>() :
+                                               nullptr)
     , system(grid, communicator)
     , assembler(Assembler<dim>::create(parameters.solver.formulation,
                                        material_points,
                                        system,
                                        this->force_effects,
+                                       f_bar.get(),
                                        communicator))
     , linear_solver(LinearSolver::create(parameters.solver))
     , problem(grid,
@@ -81,6 +84,7 @@ namespace impm
     , newton_solver(parameters.solver)
     , resume_state(resume_state)
   {
+    problem.check_tangents(parameters.testing.check_tangent);
     if (Utilities::MPI::n_mpi_processes(communicator) > 1)
       grid.connect_cell_weight(
         [this](const typename Triangulation<dim>::cell_iterator &cell,
@@ -277,6 +281,8 @@ namespace impm
       list.push_back(face);
     if (ghost_stabilisation)
       list.push_back(ghost_stabilisation->description());
+    if (f_bar)
+      list.push_back(f_bar->description());
     if (parameters.material_points.basis == BasisType::gimp &&
         parameters.material_points.update_domains)
       list.push_back("GIMP domain update with the stretch");
@@ -294,7 +300,7 @@ namespace impm
       system.evaluate_basis(material_points, parameters.material_points.basis);
     }
     TimerOutput::Scope scope(timer, "system setup");
-    system.setup(material_points, ghost_stabilisation.get());
+    system.setup(material_points, ghost_stabilisation.get(), f_bar.get());
     if (linear_solver->needs_near_null_space())
       linear_solver->set_near_null_space(system.rigid_body_modes());
   }
@@ -311,7 +317,8 @@ namespace impm
     record.target      = control.target();
     record.system_dofs = system.n_dofs();
     problem.begin(record.start, record.target);
-    record.newton = newton_solver.solve(problem);
+    record.newton             = newton_solver.solve(problem);
+    record.tangent_difference = problem.take_tangent_difference();
     if (record.converged())
       record.point_increment = problem.max_point_increment();
     record.newton.outcome =

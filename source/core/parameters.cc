@@ -282,6 +282,15 @@ namespace impm
                         Patterns::Bool(),
                         "GIMP only: scale the domain half-lengths with the "
                         "stretch U of F = RU (true) or keep them (false).");
+      prm.declare_entry("F-bar",
+                        "false",
+                        Patterns::Bool(),
+                        "Against volumetric locking (Coombs et al. 2018): "
+                        "each point's volume change is replaced by the "
+                        "volume-weighted mean of the points of its body in "
+                        "its cell at the start of the step, with the "
+                        "consistent tangent (non-symmetric; it couples all "
+                        "nodes those points touch).");
       prm.declare_entry("Load imbalance threshold",
                         "1.2",
                         Patterns::Double(1.),
@@ -299,6 +308,7 @@ namespace impm
       prm.enter_subsection("Material points");
       basis                    = basis_type_from_string(prm.get("Basis"));
       update_domains           = prm.get_bool("Update domains");
+      f_bar                    = prm.get_bool("F-bar");
       load_imbalance_threshold = prm.get_double("Load imbalance threshold");
       prm.leave_subsection();
     }

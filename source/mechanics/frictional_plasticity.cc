@@ -116,6 +116,8 @@ namespace impm
           return "smooth surface";
         case ReturnRegion::edge:
           return "edge";
+        case ReturnRegion::tension_cut_off:
+          return "tension cut-off";
         case ReturnRegion::apex:
         default:
           return "apex";

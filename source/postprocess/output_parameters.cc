@@ -106,6 +106,15 @@ namespace impm
                         "(quadratic convergence observed as 1.7 or more; a "
                         "scene whose points change return region in the "
                         "last iterations may say less, with its reason).");
+      prm.declare_entry("Check tangent",
+                        "false",
+                        Patterns::Bool(),
+                        "Compare every assembled matrix with central "
+                        "differences of the internal force, one system DoF "
+                        "at a time (two stress updates per DoF: for small "
+                        "scenes only); the test summary says whether the "
+                        "largest difference is within 1e-6 of the largest "
+                        "entry.");
       prm.declare_entry("Significant digits",
                         "6",
                         Patterns::Integer(3, 17),
@@ -157,6 +166,7 @@ namespace impm
       enabled              = prm.get_bool("Enabled");
       n_printed_points     = prm.get_integer("Printed points");
       minimum_newton_order = prm.get_double("Minimum Newton order");
+      check_tangent        = prm.get_bool("Check tangent");
       significant_digits   = prm.get_integer("Significant digits");
       reference_extent =
         get_optional_vector(prm, "Testing", "Reference extent", dimension);

@@ -41,6 +41,8 @@ namespace impm
     system_dofs_last_step = record.system_dofs;
     for (const LinearSolveReport &solve : record.newton.linear_solves)
       worst_condition = std::max(worst_condition, solve.condition_estimate);
+    max_tangent_difference =
+      std::max(max_tangent_difference, record.tangent_difference);
     if (!record.converged())
       {
         ++n_cuts;

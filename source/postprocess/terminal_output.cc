@@ -165,6 +165,17 @@ namespace impm
                                                                    "NO")
                 << '\n';
       const auto &testing = parameters.testing;
+      if (testing.check_tangent)
+        std::cout << "every assembled matrix agrees with central differences "
+                     "of the internal force to 1e-6: "
+                  << (statistics.max_tangent_difference < 0. ?
+                        "not checked" :
+                      statistics.max_tangent_difference <= 1e-6 ?
+                        "yes" :
+                        "NO (" +
+                          std::to_string(statistics.max_tangent_difference) +
+                          ")")
+                  << '\n';
       std::cout << "scales: L = " << testing.reference_length
                 << " m, S = " << testing.reference_stress
                 << " Pa; extents and displacements in L, stresses in S, "

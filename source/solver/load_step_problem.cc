@@ -1,5 +1,8 @@
 #include <impm/solver/load_step_problem.h>
 
+#include <algorithm>
+#include <limits>
+
 namespace impm
 {
   template <int dim>
@@ -90,6 +93,79 @@ namespace impm
     if (ghost_stabilisation != nullptr)
       ghost_stabilisation->add_matrix(system, system.matrix);
     system.matrix.compress(VectorOperation::add);
+    if (checks_tangent)
+      tangent_difference =
+        std::max(tangent_difference,
+                 tangent_difference_by_central_differences());
+  }
+
+
+
+  template <int dim>
+  double
+  LoadStepProblem<dim>::tangent_difference_by_central_differences()
+  {
+    const MPI_Comm communicator = grid.get_triangulation().get_communicator();
+    // This process's rows: (system index, local DoF).
+    std::vector<std::pair<types::global_dof_index, unsigned int>> rows;
+    for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
+      if (system.system_index(i) != numbers::invalid_dof_index)
+        rows.emplace_back(system.system_index(i), i);
+    const auto internal_force_at = [&](std::vector<double> &values) {
+      internal_force = 0.;
+      AssertThrow(assembler.update_stresses(displacement_increment),
+                  ExcMessage("Testing/Check tangent: a perturbed iterate is "
+                             "inadmissible."));
+      assembler.add_internal_force(internal_force);
+      if (ghost_stabilisation != nullptr)
+        ghost_stabilisation->add_forces(displacement_increment, internal_force);
+      internal_force.compress(VectorOperation::add);
+      values.resize(rows.size());
+      for (unsigned int r = 0; r < rows.size(); ++r)
+        values[r] = internal_force.local_element(rows[r].second);
+    };
+    // A perturbation small against the cells, large against round-off.
+    double cell = std::numeric_limits<double>::max();
+    for (unsigned int d = 0; d < dim; ++d)
+      cell = std::min(cell, grid.cartesian().cell_size[d]);
+    const double perturbation = 1e-7 * cell;
+
+    double              largest_entry = 0., largest_difference = 0.;
+    std::vector<double> plus, minus;
+    for (types::global_dof_index column = 0; column < system.n_dofs(); ++column)
+      {
+        // The owner perturbs the DoF; the ghosts follow.
+        unsigned int local = numbers::invalid_unsigned_int;
+        for (const auto &[index, i] : rows)
+          if (index == column)
+            local = i;
+        const auto perturb = [&](const double amount) {
+          displacement_increment.zero_out_ghost_values();
+          if (local != numbers::invalid_unsigned_int)
+            displacement_increment.local_element(local) += amount;
+          displacement_increment.update_ghost_values();
+        };
+        perturb(perturbation);
+        internal_force_at(plus);
+        perturb(-2. * perturbation);
+        internal_force_at(minus);
+        perturb(perturbation);
+        for (unsigned int r = 0; r < rows.size(); ++r)
+          {
+            const double entry = system.matrix.el(rows[r].first, column);
+            const double difference =
+              (plus[r] - minus[r]) / (2. * perturbation);
+            largest_entry = std::max(largest_entry, std::abs(entry));
+            largest_difference =
+              std::max(largest_difference, std::abs(entry - difference));
+          }
+      }
+    // Back to the iterate's stresses and forces.
+    std::vector<double> unused;
+    internal_force_at(unused);
+    largest_entry      = Utilities::MPI::max(largest_entry, communicator);
+    largest_difference = Utilities::MPI::max(largest_difference, communicator);
+    return largest_entry > 0. ? largest_difference / largest_entry : 0.;
   }
 
 

@@ -3,6 +3,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <impm/assembly/f_bar.h>
 #include <impm/assembly/ghost_stabilisation.h>
 #include <impm/system/load_step_system.h>
 
@@ -76,7 +77,8 @@ namespace impm
   template <int dim>
   void
   LoadStepSystem<dim>::setup(const MaterialPoints<dim> &material_points,
-                             GhostStabilisation<dim>   *ghost_stabilisation)
+                             GhostStabilisation<dim>   *ghost_stabilisation,
+                             FBar<dim>                 *f_bar)
   {
     // Mark every DoF a point touches, and tell the owners.
     NodalVector marker;
@@ -158,15 +160,21 @@ namespace impm
           relevant.add_index(index);
     relevant.compress();
 
-    // The sparsity pattern comes from the points' supports and the
-    // stabilised faces. When it is made of the same row sets as the
-    // matrix's on every process, the matrix is kept (it is zeroed before
-    // each assembly).
-    std::vector<std::vector<types::global_dof_index>> face_rows;
+    // The sparsity pattern comes from the points' supports, the stabilised
+    // faces and the F-bar patches (every DoF of a patch couples to every
+    // other). When it is made of the same row sets as the matrix's on every
+    // process, the matrix is kept (it is zeroed before each assembly).
+    std::vector<std::vector<types::global_dof_index>> blocks;
     if (ghost_stabilisation != nullptr)
       for (const auto &face : ghost_stabilisation->faces())
-        face_rows.push_back(face_indices(face.dofs));
-    const std::uint64_t fingerprint = pattern_fingerprint(face_rows);
+        blocks.push_back(face_indices(face.dofs));
+    if (f_bar != nullptr)
+      {
+        f_bar->setup(material_points, *this, n_local);
+        for (auto &rows : f_bar->patch_rows())
+          blocks.push_back(std::move(rows));
+      }
+    const std::uint64_t fingerprint = pattern_fingerprint(blocks);
     ++n_setups;
     if (Utilities::MPI::min(fingerprint == matrix_fingerprint ? 1u : 0u,
                             communicator) == 1u)
@@ -176,7 +184,7 @@ namespace impm
       }
     matrix_fingerprint = fingerprint;
     DynamicSparsityPattern dsp(relevant);
-    for (const auto &indices : face_rows)
+    for (const auto &indices : blocks)
       for (const auto row : indices)
         dsp.add_entries(row, indices.begin(), indices.end(), true);
     for (const AssemblyGroup &group : assembly_groups)
@@ -358,12 +366,12 @@ namespace impm
   template <int dim>
   std::uint64_t
   LoadStepSystem<dim>::pattern_fingerprint(
-    const std::vector<std::vector<types::global_dof_index>> &face_rows) const
+    const std::vector<std::vector<types::global_dof_index>> &blocks) const
   {
     std::vector<const std::vector<types::global_dof_index> *> row_sets;
     for (const AssemblyGroup &group : assembly_groups)
       row_sets.push_back(&group.rows);
-    for (const auto &rows : face_rows)
+    for (const auto &rows : blocks)
       row_sets.push_back(&rows);
     const auto by_content = [](const auto *a, const auto *b) {
       return *a < *b;

@@ -5,6 +5,7 @@
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <impm/assembly/f_bar.h>
 #include <impm/core/effects.h>
 #include <impm/core/parameters.h>
 #include <impm/points/material_points.h>
@@ -40,6 +41,7 @@ namespace impm
      * @param material_points The points.
      * @param system The load step's system (its point steps are updated).
      * @param force_effects The scene's loads.
+     * @param f_bar The F-bar treatment, or nullptr (none).
      * @param communicator The processes of the run.
      */
     static std::unique_ptr<Assembler<dim>>
@@ -47,6 +49,7 @@ namespace impm
            const MaterialPoints<dim>    &material_points,
            LoadStepSystem<dim>          &system,
            const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
+           FBar<dim>                                            *f_bar,
            const MPI_Comm                                        communicator);
 
     /** @brief Destructor. */
@@ -54,7 +57,8 @@ namespace impm
 
     /**
      * @brief The stress update: each point's deformation gradient increment
-     * from @p increment and its material's return map. Returns false on
+     * from @p increment (with F-bar, scaled to its patch's mean volume
+     * change) and its material's return map. Returns false on
      * every process if any point's increment is inverted or not finite.
      * Collective.
      */
@@ -90,6 +94,7 @@ namespace impm
       const MaterialPoints<dim>                            &material_points,
       LoadStepSystem<dim>                                  &system,
       const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
+      FBar<dim>                                            *f_bar,
       const MPI_Comm                                        communicator);
 
     /** The points. */
@@ -98,6 +103,8 @@ namespace impm
     LoadStepSystem<dim> &system;
     /** The loads. */
     const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects;
+    /** The F-bar treatment, or nullptr. */
+    FBar<dim> *f_bar;
     /** The processes. */
     const MPI_Comm communicator;
   };

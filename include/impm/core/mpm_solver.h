@@ -115,9 +115,11 @@ namespace impm
     ConditionalOStream root_out;
     TimerOutput        timer;
 
-    BackgroundGrid<dim>                        grid;
-    MaterialPoints<dim>                        material_points;
-    std::unique_ptr<GhostStabilisation<dim>>   ghost_stabilisation;
+    BackgroundGrid<dim>                      grid;
+    MaterialPoints<dim>                      material_points;
+    std::unique_ptr<GhostStabilisation<dim>> ghost_stabilisation;
+    /** The F-bar treatment, if the scene asks for it. */
+    std::unique_ptr<FBar<dim>>                 f_bar;
     LoadStepSystem<dim>                        system;
     std::unique_ptr<Assembler<dim>>            assembler;
     std::unique_ptr<LinearSolver>              linear_solver;

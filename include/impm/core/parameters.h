@@ -254,6 +254,9 @@ namespace impm
       BasisType basis;
       /** Whether GIMP domains stretch with the deformation. */
       bool update_domains;
+      /** Whether the points' volume changes are averaged per cell and body
+       *  (FBar). */
+      bool f_bar;
       /** Largest ratio of the most points on a process to the mean before
        *  the grid is repartitioned. */
       double load_imbalance_threshold;
@@ -380,6 +383,8 @@ namespace impm
       unsigned int n_printed_points;
       /** The observed Newton order every step must reach. */
       double minimum_newton_order;
+      /** Compare every assembled matrix with central differences. */
+      bool check_tangent;
       /** Significant digits of the printed points' numbers. */
       unsigned int significant_digits;
       /** Expected upper corner of the final points' bounding box (empty:

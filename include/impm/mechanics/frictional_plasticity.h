@@ -88,7 +88,9 @@ namespace impm
     /** On an edge of two Mohr-Coulomb planes. */
     edge,
     /** At the apex. */
-    apex
+    apex,
+    /** On a tension cut-off plane (alone or with others). */
+    tension_cut_off
   };
 
   /** @brief The name of a region ("smooth surface", "edge", ...). */

@@ -20,12 +20,34 @@ namespace impm
    * (de Souza Neto et al. 2008, boxes 8.4 and 8.5), each with its exact
    * tangent. With linear hardening every return is a linear solve.
    * The equivalent plastic strain is @f$2\cos\phi\,\kappa@f$.
+   *
+   * An optional tension cut-off (Rankine, associated flow) bounds every
+   * principal stress by the tensile strength @f$T@f$ (where T is below the
+   * apex pressure @f$c\cot\phi@f$; at or above it, it cuts nothing and
+   * the returns are those above): the return then looks for the set of active
+   * surfaces among the three Mohr-Coulomb planes and the three tension
+   * planes whose multipliers are non-negative and whose stresses violate no
+   * surface and keep their order. Plastic flow on a tension plane does not
+   * change the cohesion.
    */
   class MohrCoulomb : public PrincipalStressPlasticity
   {
   public:
-    /** @brief Constructor. */
-    explicit MohrCoulomb(const FrictionalParameters &parameters);
+    /**
+     * @brief Constructor.
+     * @param parameters Elastic constants, cohesion, angles.
+     * @param tensile_strength The tension cut-off T in Pa, or a negative
+     *   number for none.
+     */
+    explicit MohrCoulomb(const FrictionalParameters &parameters,
+                         const double                tensile_strength = -1.);
+
+    /**
+     * @brief Declare the entries of the Mohr-Coulomb subsection: those of
+     * FrictionalParameters and the tension cut-off.
+     */
+    static void
+    declare_parameters(ParameterHandler &prm);
 
     std::string
     description() const override;
@@ -39,16 +61,52 @@ namespace impm
 
   private:
     /**
-     * @brief The return to the planes @p planes at once (one or two), each
-     * given by its larger and smaller principal index; false if a
-     * multiplier came out negative.
+     * @brief A linear yield surface in principal stresses, @f$N \cdot
+     * \tau \le r@f$, with flow direction M.
+     */
+    struct Surface
+    {
+      /** The normal N and the flow direction M. */
+      std::array<double, 3> normal, flow;
+      /** The level r at the start of the return. */
+      double level;
+      /** Whether its level is @f$2c\cos\phi@f$ (it hardens with the
+       *  cohesion and its multiplier is plastic strain). */
+      bool cohesive;
+    };
+
+    /**
+     * @brief The Mohr-Coulomb plane of the principal indices @p larger and
+     * @p smaller at cohesion @p c.
+     */
+    Surface
+    plane(const unsigned int larger,
+          const unsigned int smaller,
+          const double       c) const;
+
+    /**
+     * @brief The return to @p surfaces at once (one to three): all active,
+     * their multipliers from one linear solve; false if a multiplier came
+     * out negative.
      */
     bool
-    return_to_planes(const std::array<double, 3>                &trial_stress,
-                     const std::vector<std::array<unsigned, 2>> &planes,
-                     const double                                cohesion,
-                     const double     hardening_slope,
-                     PrincipalReturn &result) const;
+    return_to_surfaces(const std::array<double, 3> &trial_stress,
+                       const std::vector<Surface>  &surfaces,
+                       const double                 hardening_slope,
+                       PrincipalReturn             &result) const;
+
+    /**
+     * @brief With the tension cut-off: the first set of active surfaces
+     * (fewest first) whose return is admissible.
+     */
+    void
+    return_with_cut_off(const std::array<double, 3> &trial_stress,
+                        const double                 cohesion,
+                        const double                 hardening_slope,
+                        PrincipalReturn             &result) const;
+
+    /** The tension cut-off T (negative: none). */
+    double tensile_strength;
   };
 } // namespace impm
 

@@ -86,6 +86,10 @@ namespace impm
     double              reaction_imbalance = -1.;
     /** Values measured by postprocessors (converged steps only). */
     std::vector<StepMeasure> measures;
+    /** Testing/Check tangent only: the largest relative difference between
+     *  an assembled matrix of the attempt and its central differences
+     *  (negative: not checked). */
+    double tangent_difference = -1.;
 
     /** @brief Whether the attempt converged and was accepted. */
     bool
@@ -123,6 +127,9 @@ namespace impm
     /** Smallest observed Newton order of the converged steps (see
      *  NewtonRecord::observed_order()). */
     double min_newton_order = NewtonRecord().observed_order();
+    /** The largest StepRecord::tangent_difference (negative: not
+     *  checked). */
+    double max_tangent_difference = -1.;
     /** Reactions and measures of the last converged step. */
     std::vector<double>      last_reactions;
     std::vector<StepMeasure> last_measures;

@@ -70,6 +70,28 @@ namespace impm
     double
     max_point_increment() const;
 
+    /**
+     * @brief Compare every matrix that assemble_matrix() makes with central
+     * differences of the internal force (Testing/Check tangent).
+     */
+    void
+    check_tangents(const bool check)
+    {
+      checks_tangent = check;
+    }
+
+    /**
+     * @brief The largest relative difference found by the tangent checks
+     * since the last call (negative: none), and start again.
+     */
+    double
+    take_tangent_difference()
+    {
+      const double difference = tangent_difference;
+      tangent_difference      = -1.;
+      return difference;
+    }
+
     /** @brief The displacement increment of the current iterate. */
     const NodalVector &
     increment() const
@@ -99,6 +121,21 @@ namespace impm
     NodalVector external_force;
     /** Norm of the external force on the system's DoFs. */
     double external_force_norm = 0.;
+
+    /**
+     * The largest difference, over the matrix's entries, between the
+     * assembled matrix and central differences of the internal force,
+     * relative to the largest entry. Perturbs each system DoF in turn (on
+     * its owner; all processes take part) and restores the iterate.
+     * Collective.
+     */
+    double
+    tangent_difference_by_central_differences();
+
+    /** Whether assemble_matrix() checks its matrix. */
+    bool checks_tangent = false;
+    /** The largest difference of the checks (negative: none). */
+    double tangent_difference = -1.;
   };
 } // namespace impm
 

@@ -21,6 +21,8 @@ namespace impm
 
   template <int dim>
   class GhostStabilisation;
+  template <int dim>
+  class FBar;
 
   /**
    * @brief Points with the same support DoFs: their stiffness is summed in
@@ -90,12 +92,14 @@ namespace impm
 
     /**
      * @brief Number the system's DoFs, group the points, let the ghost
-     * stabilisation (if any) choose its faces, and make the sparsity
-     * pattern, matrix and vectors. Collective.
+     * stabilisation (if any) choose its faces and F-bar (if any) its
+     * patches, and make the sparsity pattern, matrix and vectors.
+     * Collective.
      */
     void
     setup(const MaterialPoints<dim> &material_points,
-          GhostStabilisation<dim>   *ghost_stabilisation);
+          GhostStabilisation<dim>   *ghost_stabilisation,
+          FBar<dim>                 *f_bar);
 
     /** @brief The per-point data of this step, in iteration order. */
     std::vector<PointStep<dim>> point_steps;
@@ -165,12 +169,13 @@ namespace impm
     /**
      * @brief A fingerprint of what the sparsity pattern is made of on this
      * process: the system's size and this process's rows, the distinct
-     * row sets of the assembly groups and of the stabilised faces (@p
-     * face_rows). Equal fingerprints give equal patterns.
+     * row sets of the assembly groups and the further dense blocks (@p
+     * blocks: stabilised faces, F-bar patches). Equal fingerprints give
+     * equal patterns.
      */
     std::uint64_t
     pattern_fingerprint(
-      const std::vector<std::vector<types::global_dof_index>> &face_rows) const;
+      const std::vector<std::vector<types::global_dof_index>> &blocks) const;
 
     /** The fingerprint of the pattern the matrix has (0: none yet). */
     std::uint64_t matrix_fingerprint = 0;

@@ -27,9 +27,12 @@ namespace impm
     PointSupport<dim> support;
     /** Local indices of the support's DoFs in the nodal vectors. */
     std::array<unsigned int, PointSupport<dim>::max_nodes * dim> dofs;
-    /** Deformation gradient increment of the current iterate. */
+    /** Deformation gradient increment of the current iterate that the
+     *  material sees and the point accumulates (with F-bar: the modified
+     *  one, FBar). */
     Tensor<2, dim> deformation_increment;
-    /** Its inverse. */
+    /** The inverse of the true increment (from the nodal displacements),
+     *  which maps the gradients to the current configuration. */
     Tensor<2, dim> deformation_increment_inverse;
     /** Initial volume @f$V_p^0@f$. */
     double initial_volume;

@@ -1,0 +1,49 @@
+#!/bin/bash
+# The strip footings with and without F-bar under refinement (issue 12):
+# the von Mises footing on a stiff layer (prm/strip_footing.prm with
+# E = 100 MPa and 0.02 m settlement, Prandtl 36.36 kN) and the Mohr-Coulomb
+# footing (prm/strip_footing_mohr_coulomb.prm, Prandtl 74.2 kN). One run at
+# a time; prints one line per run (cells, F-bar, seconds, steps, Newton
+# iterations, final load in kN) and draws the von Mises curves.
+# Usage: scripts/footing_study.sh build/impm OUTDIR [vm|mc|all]
+set -e
+impm=$(realpath "$1")
+out=$2
+which=${3:-all}
+root=$(cd "$(dirname "$0")/.." && pwd)
+mkdir -p "$out"
+run() { # name prm cells f-bar extra...
+  local name=$1 prm=$2 cells=$3 fbar=$4
+  shift 4
+  local start=$(date +%s.%N)
+  "$impm" "$prm" --set "Grid/Number of cells=$cells" \
+    --set "Material points/F-bar=$fbar" --set "Output/Interval=0" \
+    --set "Output directory=$out/$name" "$@" > "$out/$name.log" 2>&1 || true
+  local end=$(date +%s.%N)
+  awk -F, -v n="$name" -v t="$(echo "$end - $start" | bc)" \
+    'NR > 1 && $4 == 1 {steps++; it += $5; load = -$13 / 1000}
+     NR > 1 {all_it += $5}
+     END {printf "%-28s %7.1f s  %4d steps  %5d Newton iterations  %8.2f kN\n", n, t, steps, all_it, load}' \
+    "$out/$name/steps.csv"
+}
+if [ "$which" = vm ] || [ "$which" = all ]; then
+  for cells in "20, 8" "40, 16" "80, 32"; do
+    for fbar in false true; do
+      run "vm_${cells/, /x}_fbar_$fbar" "$root/prm/strip_footing.prm" "$cells" $fbar \
+        --set "Body 1/Material/von Mises/Young's modulus=1e8" \
+        --set "Grid/Displacement y+=0, -0.02"
+    done
+  done
+  /usr/bin/python3 "$root/doc/scripts/footing_curves.py" "$out/footing_von_mises.png" 36.36 0.02 \
+    "h = 0.25 m, F-bar off=$out/vm_20x8_fbar_false/steps.csv" \
+    "h = 0.25 m, F-bar on=$out/vm_20x8_fbar_true/steps.csv" \
+    "h = 0.125 m, F-bar off=$out/vm_40x16_fbar_false/steps.csv" \
+    "h = 0.125 m, F-bar on=$out/vm_40x16_fbar_true/steps.csv" \
+    "h = 0.0625 m, F-bar off=$out/vm_80x32_fbar_false/steps.csv" \
+    "h = 0.0625 m, F-bar on=$out/vm_80x32_fbar_true/steps.csv"
+fi
+if [ "$which" = mc ] || [ "$which" = all ]; then
+  for cells in "20, 9" "40, 18" "80, 36"; do
+    run "mc_${cells/, /x}_fbar_true" "$root/prm/strip_footing_mohr_coulomb.prm" "$cells" true
+  done
+fi
