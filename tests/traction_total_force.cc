@@ -1,22 +1,35 @@
 // The Traction effect's total force against the traction times the length
-// of the loaded side, for a box, a disc and a polygon in 2D, and the face
+// or area of the loaded boundary, for a box, a disc and a polygon in 2D and
+// a sphere and a box in 3D, by side and by region alone, and the face
 // weights that spread each share over the grid (they must sum to one).
 //
-// Grid [0, 4] x [0, 4], 8 x 8 cells, 2 x 2 points per cell (spacing
-// 0.25 m): the points are the lattice sites inside each body, as the
-// seeding places them. Traction t = (300, -1e4) Pa at load factor 1.
-// Exact lengths of the loaded sides:
-// 1. box [0.5, 2.5] x [0.5, 3], side y+: L = 2;
+// Grid [0, 4]^d, 8 cells per direction, 2 points per cell and direction
+// (spacing 0.25 m): the points are the lattice sites inside each body, as
+// the seeding places them. Traction t = (300, -1e4) Pa (3D: (300, 200,
+// -1e4)) at load factor 1. Exact lengths and areas of the loaded parts:
+// 1. box [0.5, 2.5] x [0.5, 3], side y+: L = 2; by the region [0, 4]^2
+//    (the whole boundary): the perimeter 9;
 // 2. disc centre (2.03, 1.97), radius 1.3, side y+ (the upper half circle):
-//    L = pi 1.3 = 4.08407045; side x- (the left half): the same;
+//    L = pi 1.3 = 4.08407045; side x- (the left half): the same; by a
+//    region holding it all: 2 pi 1.3 = 8.16814090;
 // 3. polygon (0.1, 0.2), (3.3, 0.4), (2.6, 2.9), (0.7, 2.2) (counter-
 //    clockwise), side y+: the edges whose outward normal (e_y, -e_x) has a
 //    positive y component, i.e. those with e_x < 0:
 //    |(-0.7, 2.5)| = sqrt(6.74) = 2.59615100, |(-1.9, -0.7)| = sqrt(4.10) =
-//    2.02484567, |(-0.6, -2.0)| = sqrt(4.36) = 2.08806130; L = 6.70905797.
+//    2.02484567, |(-0.6, -2.0)| = sqrt(4.36) = 2.08806130; L = 6.70905797;
+// 4. a square turned by 45 degrees, vertices (2, 0.5), (3.5, 2), (2, 3.5),
+//    (0.5, 2): its upper right side alone, by the region [2.05, 4]^2 (the
+//    side's pieces, cut at the lattice lines x = 0.25 m, have midpoints
+//    with x and y in [2.125, 3.375]; the neighbouring sides' have x < 2 or
+//    y < 2): L = 1.5 sqrt 2 = 2.12132034; the whole boundary: 6 sqrt 2;
+// 5. sphere centre (2.02, 1.97, 2.04), radius 1.3, side z+ (the upper half):
+//    A = 2 pi 1.3^2 = 10.61858317 (Archimedes' zones); the whole sphere by
+//    a region: 4 pi 1.3^2 = 21.23716634;
+// 6. box [0.5, 2.5] x [0.5, 3] x [1, 2.5] by the region [0, 4]^3: the whole
+//    surface 2 (2 x 2.5 + 2 x 1.5 + 2.5 x 1.5) = 23.5 (lattice faces).
 // Before the loads were cut along the true boundary, the disc's side y+
 // carried the staircase of its lattice faces (its points' count times
-// 0.25 m), not pi R.
+// 0.25 m), not pi R; before zones, the sphere's its lattice faces.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -33,47 +46,71 @@ using namespace impm;
 
 namespace
 {
+  template <int dim>
   void
-  check(const std::string &name,
-        const Body<2>     &body,
-        const std::string &boundary,
-        const double       exact_length)
+  check(const std::string         &name,
+        const Body<dim>           &body,
+        const std::string         &boundary,
+        const double               exact_size,
+        const std::vector<double> &region = {})
   {
-    CartesianGrid<2> grid;
-    grid.initialize(Point<2>(0., 0.), Point<2>(4., 4.), {{8, 8}});
+    CartesianGrid<dim> grid;
+    Point<dim>         upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      upper[d] = 4.;
+    std::array<unsigned int, dim> cells;
+    cells.fill(8);
+    grid.initialize(Point<dim>(), upper, cells);
 
     // The lattice sites inside the body.
-    std::vector<MaterialPointInfo<2>> points;
-    for (unsigned int i = 0; i < 16; ++i)
-      for (unsigned int j = 0; j < 16; ++j)
-        {
-          const Point<2> x((i + 0.5) * 0.25, (j + 0.5) * 0.25);
-          if (body.contains(x))
-            points.push_back({16ull * i + j, x, 0, 1.});
-        }
+    std::vector<MaterialPointInfo<dim>> points;
+    const unsigned int                  n = dim == 2 ? 16 * 16 : 16 * 16 * 16;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        Point<dim>   x;
+        unsigned int rest = k;
+        for (unsigned int d = 0; d < dim; ++d, rest /= 16)
+          x[d] = (rest % 16 + 0.5) * 0.25;
+        if (body.contains(x))
+          points.push_back({k, x, 0, 1.});
+      }
 
     ParameterHandler prm;
-    const auto      &entry = ForceEffectList<2>::find("Traction");
+    const auto      &entry = ForceEffectList<dim>::find("Traction");
     prm.enter_subsection("Traction");
     entry.declare_parameters(prm);
     prm.set("Boundary", boundary);
-    prm.set("Traction", "300, -1e4");
+    prm.set("Traction", dim == 2 ? "300, -1e4" : "300, 200, -1e4");
+    if (!region.empty())
+      {
+        std::string lower, upper_corner;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower += (d > 0 ? ", " : "") + std::to_string(region[d]);
+            upper_corner +=
+              (d > 0 ? ", " : "") + std::to_string(region[dim + d]);
+          }
+        prm.set("Region lower corner", lower);
+        prm.set("Region upper corner", upper_corner);
+      }
     auto traction = entry.create(prm);
     prm.leave_subsection();
     traction->initialize(points, {body}, grid, MPI_COMM_SELF);
 
-    std::vector<FaceForce<2>> faces;
+    std::vector<FaceForce<dim>> faces;
     traction->add_face_forces(points, 1., faces);
-    Tensor<1, 2>            total;
-    double                  worst_sum = 0.;
-    const BasisEvaluator<2> evaluator(grid, BasisType::gimp);
+    Tensor<1, dim>            total;
+    double                    worst_sum = 0.;
+    const BasisEvaluator<dim> evaluator(grid, BasisType::gimp);
+    Tensor<1, dim>            half_length;
+    for (unsigned int d = 0; d < dim; ++d)
+      half_length[d] = 0.125;
     for (const auto &face : faces)
       {
         total += face.force;
         // The face weights of the point's support sum to one.
-        PointSupport<2>                                support;
-        std::array<double, PointSupport<2>::max_nodes> weights;
-        const Tensor<1, 2> half_length({0.125, 0.125});
+        PointSupport<dim>                                support;
+        std::array<double, PointSupport<dim>::max_nodes> weights;
         evaluator.evaluate(points[face.point].initial_position,
                            half_length,
                            support);
@@ -88,10 +125,18 @@ namespace
           sum += weights[v];
         worst_sum = std::max(worst_sum, std::abs(sum - 1.));
       }
-    const Tensor<1, 2> expected({300. * exact_length, -1e4 * exact_length});
-    std::cout << name << ", side " << boundary << ": " << faces.size()
-              << " loaded points" << std::endl;
-    impm_tests::check_below("  |total force - t L| / |t L|",
+    Tensor<1, dim> t;
+    t[0]       = 300.;
+    t[dim - 1] = -1e4;
+    if (dim == 3)
+      t[1] = 200.;
+    const Tensor<1, dim> expected = exact_size * t;
+    std::cout << name << " (" << dim << "D), "
+              << (boundary == "region" ? "the boundary in the region" :
+                                         "side " + boundary)
+              << ": " << faces.size() << " loaded faces" << std::endl;
+    impm_tests::check_below(std::string("  |total force - t ") +
+                              (dim == 2 ? "L| / |t L|" : "A| / |t A|"),
                             (total - expected).norm() / expected.norm(),
                             1e-10);
     impm_tests::check_below("  largest |sum of face weights - 1|",
@@ -112,6 +157,7 @@ main(int argc, char **argv)
   box.upper_corner         = Point<2>(2.5, 3.);
   box.points_per_direction = 2;
   check("box", box, "y+", 2.);
+  check("box", box, "region", 9., {0., 0., 4., 4.});
 
   Body<2> disc = box;
   disc.shape   = Body<2>::Shape::disc;
@@ -119,6 +165,7 @@ main(int argc, char **argv)
   disc.radius  = 1.3;
   check("disc", disc, "y+", M_PI * 1.3);
   check("disc", disc, "x-", M_PI * 1.3);
+  check("disc", disc, "region", 2. * M_PI * 1.3, {0., 0., 4., 4.});
 
   Body<2> polygon  = box;
   polygon.shape    = Body<2>::Shape::polygon;
@@ -130,4 +177,36 @@ main(int argc, char **argv)
         polygon,
         "y+",
         std::sqrt(6.74) + std::sqrt(4.10) + std::sqrt(4.36));
+
+  Body<2> diamond  = polygon;
+  diamond.vertices = {Point<2>(2., 0.5),
+                      Point<2>(3.5, 2.),
+                      Point<2>(2., 3.5),
+                      Point<2>(0.5, 2.)};
+  check("turned square, upper right side",
+        diamond,
+        "region",
+        1.5 * std::sqrt(2.),
+        {2.05, 2.05, 4., 4.});
+  check(
+    "turned square", diamond, "region", 6. * std::sqrt(2.), {0., 0., 4., 4.});
+
+  Body<3> sphere;
+  sphere.name                 = "Body 1";
+  sphere.shape                = Body<3>::Shape::sphere;
+  sphere.center               = Point<3>(2.02, 1.97, 2.04);
+  sphere.radius               = 1.3;
+  sphere.points_per_direction = 2;
+  check("sphere", sphere, "z+", 2. * M_PI * 1.3 * 1.3);
+  check("sphere",
+        sphere,
+        "region",
+        4. * M_PI * 1.3 * 1.3,
+        {0., 0., 0., 4., 4., 4.});
+
+  Body<3> box_3d      = sphere;
+  box_3d.shape        = Body<3>::Shape::box;
+  box_3d.lower_corner = Point<3>(0.5, 0.5, 1.);
+  box_3d.upper_corner = Point<3>(2.5, 3., 2.5);
+  check("box", box_3d, "region", 23.5, {0., 0., 0., 4., 4., 4.});
 }

@@ -67,19 +67,43 @@ namespace impm
     double
     volume() const;
 
+    /** @brief A piece of a body's true boundary. */
+    struct BoundaryPiece
+    {
+      /** Its midpoint on the boundary. */
+      Point<dim> midpoint;
+      /** Its length (2D) or area (3D). */
+      double size;
+      /** The outward unit normal at the midpoint. */
+      Tensor<1, dim> normal;
+    };
+
     /**
-     * @brief In 2D, the part of the boundary whose outward normal points
-     * along @p sign times the axis @p axis (a box's side, half a disc, the
-     * polygon's edges facing that way), cut where it crosses the lines
-     * @f$x_j = o + m\,s@f$ of the other axis j (@p origin o, @p spacing
-     * s): each piece's midpoint and length. Their lengths add up to the
-     * length of that part of the boundary, to round-off. Empty in 3D.
+     * @brief The part of the boundary whose outward normal points along @p
+     * sign times the axis @p axis, in pieces: in 2D a box's side, half a
+     * disc, the polygon's edges facing that way, cut where they cross the
+     * lattice lines @f$x_j = o_j + m\,s_j@f$ of the other axis j (@p origin
+     * o, @p spacing s); in 3D the half sphere in zones of equal height
+     * along the axis (of about @p spacing), each cut into equal sectors.
+     * Their sizes add up to the length or area of that part of the
+     * boundary, to round-off. Empty for a box in 3D (its lattice faces are
+     * exact).
      */
-    std::vector<std::pair<Point<dim>, double>>
-    boundary_pieces(const unsigned int axis,
-                    const double       sign,
-                    const double       origin,
-                    const double       spacing) const;
+    std::vector<BoundaryPiece>
+    boundary_pieces(const unsigned int    axis,
+                    const double          sign,
+                    const Point<dim>     &origin,
+                    const Tensor<1, dim> &spacing) const;
+
+    /**
+     * @brief The whole boundary in pieces, each part once (as
+     * boundary_pieces(); a polygon's edges cut across their longer extent,
+     * a sphere in zones along z): for loads on the sides a region selects.
+     * Empty for a box in 3D.
+     */
+    std::vector<BoundaryPiece>
+    boundary_partition(const Point<dim>     &origin,
+                       const Tensor<1, dim> &spacing) const;
 
     /**
      * @brief A one-line description for the start-up report and summary.
@@ -146,6 +170,38 @@ namespace impm
     geostatic_stress(const Point<dim> &x, const double g) const;
 
   private:
+    /** @brief An edge of a polygon: start, tangent (to the next vertex),
+     *  outward unit normal. */
+    struct PolygonEdge
+    {
+      Point<dim>     start;
+      Tensor<1, dim> tangent;
+      Tensor<1, dim> normal;
+    };
+
+    /** @brief The polygon's edges (2D). */
+    std::vector<PolygonEdge>
+    polygon_edges() const;
+
+    /** @brief Add an edge's pieces, cut at the lattice lines of axis @p j. */
+    void
+    add_edge_pieces(const PolygonEdge          &edge,
+                    const unsigned int          j,
+                    const Point<dim>           &origin,
+                    const Tensor<1, dim>       &spacing,
+                    std::vector<BoundaryPiece> &pieces) const;
+
+    /**
+     * @brief Add the sphere's zones between the planes u = @p low and u =
+     * @p high normal to @p axis, each cut into sectors (3D).
+     */
+    void
+    add_sphere_zones(const unsigned int          axis,
+                     const double                low,
+                     const double                high,
+                     const Tensor<1, dim>       &spacing,
+                     std::vector<BoundaryPiece> &pieces) const;
+
     /**
      * @brief Refuse a polygon whose edges cross or touch other than at
      * shared vertices, or that has no area (@p value: the entry, for the
