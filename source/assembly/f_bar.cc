@@ -24,7 +24,7 @@ namespace impm
     dilatation_stress.resize(n_points);
 
     // The particle handler holds the points cell by cell: each cell's run
-    // of points is split by body (in the order the bodies first appear).
+    // of points is split by body (in the order of the body indices).
     std::vector<double>                                start_volume(n_points);
     std::vector<std::pair<unsigned int, unsigned int>> cell_points; // body, p
     const auto                                         close_cell = [&]() {
@@ -41,16 +41,16 @@ namespace impm
         }
       cell_points.clear();
     };
-    unsigned int p            = 0;
-    auto         current_cell = material_points.particles().begin();
+    unsigned int p              = 0;
+    auto         previous_point = material_points.particles().begin();
     for (auto point = material_points.particles().begin();
          point != material_points.particles().end();
          ++point, ++p)
       {
         if (p > 0 && point->get_surrounding_cell() !=
-                       current_cell->get_surrounding_cell())
+                       previous_point->get_surrounding_cell())
           close_cell();
-        current_cell                     = point;
+        previous_point                   = point;
         const auto            properties = point->get_properties();
         const PointState<dim> state(properties);
         start_volume[p] = state.jacobian() * state.initial_volume();
