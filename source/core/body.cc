@@ -12,38 +12,47 @@ namespace impm
 {
   template <int dim>
   void
+  Body<dim>::declare_shape_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Shape",
+                      "box",
+                      Patterns::Selection("box|disc|sphere|polygon"),
+                      "Shape of the region: box (2D, 3D), "
+                      "disc (2D), sphere (3D) or polygon (2D).");
+    prm.declare_entry("Lower corner",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Box: lower corner, one coordinate per dimension, "
+                      "in m.");
+    prm.declare_entry("Upper corner",
+                      "1, 1",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Box: upper corner, in m.");
+    prm.declare_entry("Center",
+                      "0, 0",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Disc or sphere: centre, in m.");
+    prm.declare_entry("Radius",
+                      "1",
+                      Patterns::Double(0.),
+                      "Disc or sphere: radius in m (> 0).");
+    prm.declare_entry("Vertices",
+                      "0, 0; 1, 0; 0, 1",
+                      Patterns::Anything(),
+                      "Polygon (2D): vertices 'x, y; x, y; ...' in order "
+                      "(at least three).");
+  }
+
+
+
+  template <int dim>
+  void
   Body<dim>::declare_parameters(ParameterHandler &prm)
   {
     for (unsigned int k = 1; k <= max_bodies; ++k)
       {
         prm.enter_subsection("Body " + std::to_string(k));
-        prm.declare_entry("Shape",
-                          "box",
-                          Patterns::Selection("box|disc|sphere|polygon"),
-                          "Region filled with material points: box (2D, 3D), "
-                          "disc (2D), sphere (3D) or polygon (2D).");
-        prm.declare_entry("Lower corner",
-                          "0, 0",
-                          Patterns::List(Patterns::Double(), 2, 3),
-                          "Box: lower corner, one coordinate per dimension, "
-                          "in m.");
-        prm.declare_entry("Upper corner",
-                          "1, 1",
-                          Patterns::List(Patterns::Double(), 2, 3),
-                          "Box: upper corner, in m.");
-        prm.declare_entry("Center",
-                          "0, 0",
-                          Patterns::List(Patterns::Double(), 2, 3),
-                          "Disc or sphere: centre, in m.");
-        prm.declare_entry("Radius",
-                          "1",
-                          Patterns::Double(0.),
-                          "Disc or sphere: radius in m (> 0).");
-        prm.declare_entry("Vertices",
-                          "0, 0; 1, 0; 0, 1",
-                          Patterns::Anything(),
-                          "Polygon (2D): vertices 'x, y; x, y; ...' in order "
-                          "(at least three).");
+        declare_shape_parameters(prm);
         prm.declare_entry("Points per cell direction",
                           "2",
                           Patterns::Integer(1, 10),
@@ -84,10 +93,8 @@ namespace impm
 
   template <int dim>
   void
-  Body<dim>::parse_parameters(ParameterHandler &prm, const unsigned int number)
+  Body<dim>::parse_shape(ParameterHandler &prm)
   {
-    name = "Body " + std::to_string(number);
-    prm.enter_subsection(name);
     shape = static_cast<Shape>(Parameters::selection_index(shape_names,
                                                            name + "/Shape",
                                                            prm.get("Shape")));
@@ -145,6 +152,17 @@ namespace impm
                                 "a polygon needs at least three vertices.");
         check_polygon(prm.get("Vertices"));
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Body<dim>::parse_parameters(ParameterHandler &prm, const unsigned int number)
+  {
+    name = "Body " + std::to_string(number);
+    prm.enter_subsection(name);
+    parse_shape(prm);
     points_per_direction     = prm.get_integer("Points per cell direction");
     density                  = prm.get_double("Density");
     initial_stress.geostatic = prm.get("Initial stress") == "geostatic";
@@ -353,7 +371,7 @@ namespace impm
 
   template <int dim>
   std::string
-  Body<dim>::description() const
+  Body<dim>::shape_description() const
   {
     std::ostringstream out;
     out << name << ": " << shape_names[static_cast<unsigned int>(shape)];
@@ -363,7 +381,17 @@ namespace impm
       out << " with " << vertices.size() << " vertices";
     else
       out << " centre (" << center << ") radius " << radius;
-    out << ", " << points_per_direction << "^" << dim
+    return out.str();
+  }
+
+
+
+  template <int dim>
+  std::string
+  Body<dim>::description() const
+  {
+    std::ostringstream out;
+    out << shape_description() << ", " << points_per_direction << "^" << dim
         << " points per cell, density " << density << ", "
         << material->description();
     if (initial_stress.geostatic)

@@ -58,7 +58,10 @@ namespace impm
                       grid,
                       communicator,
                       acceleration_from_the_start(this->force_effects),
-                      resume_state)
+                      resume_state,
+                      RigidContact<dim>::has_friction(parameters.rigid_bodies) ?
+                        RigidContact<dim>::traction_entries :
+                        0)
     , ghost_stabilisation(
         parameters.stabilisation.enabled ?
           std::make_unique<GhostStabilisation<dim>>(parameters.stabilisation,
@@ -67,6 +70,10 @@ namespace impm
           nullptr)
     , f_bar(parameters.material_points.f_bar ? std::make_unique<FBar<dim>>() :
                                                nullptr)
+    , rigid_contact(
+        parameters.rigid_bodies.empty() ?
+          nullptr :
+          std::make_unique<RigidContact<dim>>(parameters.rigid_bodies, grid))
     , system(grid, communicator)
     , assembler(Assembler<dim>::create(parameters.solver.formulation,
                                        material_points,
@@ -79,12 +86,15 @@ namespace impm
               system,
               *assembler,
               ghost_stabilisation.get(),
+              rigid_contact.get(),
               *linear_solver,
               timer)
     , newton_solver(parameters.solver)
     , resume_state(resume_state)
   {
     problem.check_tangents(parameters.testing.check_tangent);
+    if (rigid_contact && resume_state == nullptr)
+      rigid_contact->check_start(material_points);
     if (Utilities::MPI::n_mpi_processes(communicator) > 1)
       grid.connect_cell_weight(
         [this](const typename Triangulation<dim>::cell_iterator &cell,
@@ -215,7 +225,8 @@ namespace impm
                       effect_descriptions,
                       !force_effects.empty(),
                       timer,
-                      communicator});
+                      communicator,
+                      rigid_contact.get()});
     if (resume_state)
       postprocessors->resume(*resume_state);
     else
@@ -283,6 +294,9 @@ namespace impm
       list.push_back(ghost_stabilisation->description());
     if (f_bar)
       list.push_back(f_bar->description());
+    if (rigid_contact)
+      for (const auto &line : rigid_contact->descriptions())
+        list.push_back(line);
     if (parameters.material_points.basis == BasisType::gimp &&
         parameters.material_points.update_domains)
       list.push_back("GIMP domain update with the stretch");
@@ -316,6 +330,11 @@ namespace impm
     record.start       = control.start();
     record.target      = control.target();
     record.system_dofs = system.n_dofs();
+    if (rigid_contact)
+      rigid_contact->begin(material_points,
+                           system,
+                           record.start,
+                           record.target);
     problem.begin(record.start, record.target);
     record.newton             = newton_solver.solve(problem);
     record.tangent_difference = problem.take_tangent_difference();
@@ -334,7 +353,14 @@ namespace impm
   void
   MPMSolver<dim>::accept_load_step(StepRecord &record)
   {
-    const auto reactions      = problem.reactions();
+    Tensor<1, dim> rigid_body_force;
+    if (rigid_contact)
+      {
+        rigid_contact->accept(material_points);
+        for (const auto &force : rigid_contact->body_forces())
+          rigid_body_force += force.total;
+      }
+    const auto reactions      = problem.reactions(rigid_body_force);
     record.reactions          = reactions.by_column;
     record.reaction_imbalance = reactions.imbalance;
     TimerOutput::Scope scope(timer, "point update");

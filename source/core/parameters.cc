@@ -541,6 +541,9 @@ namespace impm
       bodies.resize(n_bodies);
       for (unsigned int k = 0; k < n_bodies; ++k)
         bodies[k].parse_parameters(prm, k + 1);
+      rigid_bodies.resize(prm.get_integer("Number of rigid bodies"));
+      for (unsigned int k = 0; k < rigid_bodies.size(); ++k)
+        rigid_bodies[k].parse_parameters(prm, k + 1);
       material_points.parse_parameters(prm);
       prm.enter_subsection("Gravity");
       gravity_enabled = prm.get_bool("Enabled");
@@ -568,6 +571,14 @@ namespace impm
                         "How many of the subsections Body 1 ... Body 4 the "
                         "scene uses (1 to 4).");
       impm::Body<2>::declare_parameters(prm);
+      prm.declare_entry(
+        "Number of rigid bodies",
+        "0",
+        Patterns::Integer(0, impm::RigidBody<2>::max_rigid_bodies),
+        "How many of the subsections Rigid body 1 ... Rigid body 4 the "
+        "scene uses (0 to 4): rigid shapes that move by a prescribed "
+        "displacement and touch the material with a penalty contact.");
+      impm::RigidBody<2>::declare_parameters(prm);
       MaterialPoints::declare_parameters(prm);
       EffectRegistry::declare_parameters(prm);
       Solver::declare_parameters(prm);

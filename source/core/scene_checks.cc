@@ -152,6 +152,10 @@ namespace impm
       void
       check_supports(const Parameters::All<dim> &parameters)
       {
+        // Rigid bodies may hold the material instead (a floor, a plate):
+        // whether they do is known only once they touch it.
+        if (!parameters.rigid_bodies.empty())
+          return;
         const auto &grid = parameters.grid;
         for (unsigned int component = 0; component < dim; ++component)
           {

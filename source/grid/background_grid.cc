@@ -252,8 +252,9 @@ namespace impm
   template <int dim>
   typename BackgroundGrid<dim>::Reactions
   BackgroundGrid<dim>::compute_reactions(
-    const NodalVector &internal_force,
-    const NodalVector &external_force) const
+    const NodalVector    &internal_force,
+    const NodalVector    &external_force,
+    const Tensor<1, dim> &rigid_body_force) const
   {
     Reactions reactions;
     reactions.by_column.assign(2 * dim * dim, 0.);
@@ -272,13 +273,14 @@ namespace impm
     double load = 0., imbalance = 0.;
     for (unsigned int c = 0; c < dim; ++c)
       {
-        double sum = total[c];
+        double sum = total[c] - rigid_body_force[c];
         for (unsigned int f = 0; f < 2 * dim; ++f)
           sum += reactions.by_column[f * dim + c];
         load += total[c] * total[c];
         imbalance += sum * sum;
       }
-    if (load > 0. && !columns_with_reactions.empty())
+    if (load > 0. &&
+        (!columns_with_reactions.empty() || rigid_body_force.norm() > 0.))
       reactions.imbalance = std::sqrt(imbalance / load);
     return reactions;
   }

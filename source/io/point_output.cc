@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 namespace impm
@@ -147,12 +148,38 @@ namespace impm
                                 });
 
           series.emplace_back(time, stem + ".pvtu");
+          if (other_parts)
+            for (const std::string &file :
+                 other_parts(stem.substr(base_name.size())))
+              series.emplace_back(time, file);
           write_file_atomically(directory + "/" + base_name + ".pvd",
                                 [&](std::ostream &out) {
-                                  DataOutBase::write_pvd_record(out, series);
+                                  write_pvd_record(out);
                                 });
         }
     });
+  }
+
+
+
+  template <int dim>
+  void
+  PointOutput<dim>::write_pvd_record(std::ostream &out) const
+  {
+    // Files of one step are its parts 0, 1, ...
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"Collection\" version=\"0.1\" "
+           "byte_order=\"LittleEndian\">\n"
+        << "  <Collection>\n";
+    unsigned int part = 0;
+    for (unsigned int i = 0; i < series.size(); ++i)
+      {
+        part = (i > 0 && series[i].first == series[i - 1].first) ? part + 1 : 0;
+        out << "    <DataSet timestep=\"" << std::setprecision(16)
+            << series[i].first << "\" group=\"\" part=\"" << part
+            << "\" file=\"" << series[i].second << "\"/>\n";
+      }
+    out << "  </Collection>\n</VTKFile>\n";
   }
 
 

@@ -18,7 +18,8 @@ namespace impm
     const BackgroundGrid<dim>    &grid,
     const MPI_Comm                communicator,
     const Tensor<1, dim>         &gravity_from_the_start,
-    const RunState               *checkpoint_state)
+    const RunState               *checkpoint_state,
+    const unsigned int            n_contact_tractions)
     : bodies(bodies)
     , grid(grid.cartesian())
     , communicator(communicator)
@@ -28,7 +29,8 @@ namespace impm
       any_plastic = any_plastic || body.material->is_plastic();
     property_layout.initialize(PointProperties<dim>::n_fixed_properties,
                                any_plastic,
-                               bodies.size() > 1);
+                               bodies.size() > 1,
+                               n_contact_tractions);
     particle_handler.initialize(grid.get_triangulation(),
                                 grid.get_mapping(),
                                 property_layout.n_properties);
@@ -49,6 +51,28 @@ namespace impm
         std::to_string(
           static_cast<long>(checkpoint_state->get_double("points.number"))) +
         ": the checkpoint is damaged.");
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::set_contact_tractions(
+    const std::vector<double> &tractions)
+  {
+    const unsigned int first = property_layout.contact_traction;
+    Assert(first != PointLayout::absent, ExcInternalError());
+    const unsigned int n = property_layout.n_properties - first;
+    AssertDimension(tractions.size(), n * n_local_points());
+    unsigned int p = 0;
+    for (auto &point : particle_handler)
+      {
+        auto properties = point.get_properties();
+        std::copy(tractions.begin() + p * n,
+                  tractions.begin() + (p + 1) * n,
+                  properties.begin() + first);
+        ++p;
+      }
   }
 
 

@@ -1,10 +1,13 @@
 #include <deal.II/base/utilities.h>
 
 #include <impm/base/names.h>
+#include <impm/contact/rigid_body.h>
+#include <impm/io/atomic_file.h>
 #include <impm/io/point_output.h>
 #include <impm/postprocess/postprocessor.h>
 
 #include <cmath>
+#include <iomanip>
 
 namespace impm
 {
@@ -50,6 +53,15 @@ namespace impm
           add("rank", false);
         if (body)
           add("body", false);
+        if (context.rigid_contact != nullptr &&
+            context.parameters.output.format ==
+              Parameters::PointFileFormat::vtu)
+          output.other_parts =
+            [this,
+             directory = context.parameters.scene.output_directory,
+             contact   = context.rigid_contact](const std::string &suffix) {
+              return write_rigid_bodies(directory, *contact, suffix);
+            };
       }
 
       void
@@ -82,6 +94,70 @@ namespace impm
       }
 
     private:
+      /**
+       * Write each rigid body's surface at the load factor of the current
+       * output as `rigid_k<suffix>.vtu` (polygons, ASCII); return the file
+       * names.
+       */
+      std::vector<std::string>
+      write_rigid_bodies(const std::string       &directory,
+                         const RigidContact<dim> &contact,
+                         const std::string       &suffix) const
+      {
+        std::vector<std::string> files;
+        const auto              &bodies = contact.bodies();
+        for (unsigned int k = 0; k < bodies.size(); ++k)
+          {
+            const auto surface =
+              bodies[k].surface(bodies[k].displacement_at(load_factor));
+            const std::string file =
+              "rigid_" + std::to_string(k + 1) + suffix + ".vtu";
+            write_file_atomically(directory + "/" + file,
+                                  [&](std::ostream &out) {
+                                    write_surface(surface, out);
+                                  });
+            files.push_back(file);
+          }
+        return files;
+      }
+
+      /** Write @p surface as a VTU file of polygons (2D) or quadrilaterals
+       *  (3D). */
+      static void
+      write_surface(const typename RigidBody<dim>::Surface &surface,
+                    std::ostream                           &out)
+      {
+        out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+               "version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            << "<UnstructuredGrid>\n<Piece NumberOfPoints=\""
+            << surface.vertices.size() << "\" NumberOfCells=\""
+            << surface.faces.size() << "\">\n<Points>\n<DataArray "
+            << "type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n"
+            << std::setprecision(12);
+        for (const auto &vertex : surface.vertices)
+          {
+            for (unsigned int d = 0; d < 3; ++d)
+              out << (d < dim ? vertex[d] : 0.) << ' ';
+            out << '\n';
+          }
+        out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" "
+               "Name=\"connectivity\" format=\"ascii\">\n";
+        for (const auto &face : surface.faces)
+          for (const unsigned int v : face)
+            out << v << ' ';
+        out << "\n</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+               "format=\"ascii\">\n";
+        std::size_t offset = 0;
+        for (const auto &face : surface.faces)
+          out << (offset += face.size()) << ' ';
+        out << "\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+               "format=\"ascii\">\n";
+        for (const auto &face : surface.faces)
+          out << (face.size() == 4 && dim == 3 ? 9 : 7) << ' ';
+        out << "\n</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n"
+               "</VTKFile>\n";
+      }
+
       /** Add the output column @p name (a vector component if @p vector). */
       void
       add(const std::string &name, const bool vector)
@@ -97,9 +173,10 @@ namespace impm
             const unsigned int     load_step)
       {
         TimerOutput::Scope scope(context.timer, "output");
-        const auto        &fields = context.parameters.output.fields;
-        const auto        &points = context.material_points;
-        const double       this_rank =
+        this->load_factor   = load_factor;
+        const auto  &fields = context.parameters.output.fields;
+        const auto  &points = context.material_points;
+        const double this_rank =
           Utilities::MPI::this_mpi_process(context.communicator);
         output.begin(points.n_local_points(), names, is_vector);
         std::vector<double> values(names.size());
@@ -142,6 +219,8 @@ namespace impm
       std::vector<bool>        is_vector;
       bool                     plastic_multiplier;
       bool                     body;
+      /** The load factor of the output being written. */
+      double load_factor = 0.;
     };
   } // namespace
   IMPM_REGISTER_POSTPROCESSOR(PointFiles,

@@ -158,7 +158,12 @@ namespace impm
       // two iterations, or at round-off) leaves the order unmeasured.
       const double minimum_order = parameters.testing.minimum_newton_order;
       std::cout << "observed Newton order near the solution >= "
-                << minimum_order << " in every step: "
+                << minimum_order << " in every step"
+                << (context.rigid_contact != nullptr ?
+                      " (pairs of iterates between which a contact changed "
+                      "state not counted)" :
+                      "")
+                << ": "
                 << (!NewtonRecord::is_measured(statistics.min_newton_order) ?
                       "not measured" :
                     statistics.min_newton_order >= minimum_order ? "yes" :
@@ -194,7 +199,8 @@ namespace impm
                     context.material_points.initial_mass());
       std::cout << buffer;
       const auto &reaction_columns = context.grid.reaction_columns();
-      if (!reaction_columns.empty() && context.has_force_effects)
+      if ((!reaction_columns.empty() || context.rigid_contact != nullptr) &&
+          context.has_force_effects)
         std::cout << "reactions balance the load to 1e-8 in every step: "
                   << (statistics.max_reaction_imbalance < 1e-8 ? "yes" : "NO")
                   << '\n';
@@ -255,6 +261,32 @@ namespace impm
                         statistics.last_reactions[c] / force);
           std::cout << buffer;
         }
+      if (context.rigid_contact != nullptr)
+        for (unsigned int k = 0; k < context.rigid_contact->bodies().size();
+             ++k)
+          {
+            const auto &body_force = context.rigid_contact->body_forces()[k];
+            std::cout << "final force on "
+                      << context.rigid_contact->bodies()[k].name << ":";
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                std::snprintf(buffer,
+                              sizeof(buffer),
+                              " %s %.6f",
+                              Names::axes[d],
+                              body_force.total[d] / force);
+                std::cout << buffer;
+              }
+            std::snprintf(buffer,
+                          sizeof(buffer),
+                          ", normal part %.6f, friction part %.6f, %u faces "
+                          "in contact, %u slipping\n",
+                          body_force.normal.norm() / force,
+                          body_force.tangential.norm() / force,
+                          body_force.n_contacts,
+                          body_force.n_slipping);
+            std::cout << buffer;
+          }
     }
 
 

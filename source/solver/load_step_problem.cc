@@ -11,12 +11,14 @@ namespace impm
     LoadStepSystem<dim>           &system,
     Assembler<dim>                &assembler,
     const GhostStabilisation<dim> *ghost_stabilisation,
+    RigidContact<dim>             *rigid_contact,
     LinearSolver                  &linear_solver,
     TimerOutput                   &timer)
     : grid(grid)
     , system(system)
     , assembler(assembler)
     , ghost_stabilisation(ghost_stabilisation)
+    , rigid_contact(rigid_contact)
     , linear_solver(linear_solver)
     , timer(timer)
   {
@@ -66,6 +68,8 @@ namespace impm
     assembler.add_internal_force(internal_force);
     if (ghost_stabilisation != nullptr)
       ghost_stabilisation->add_forces(displacement_increment, internal_force);
+    if (rigid_contact != nullptr)
+      rigid_contact->add_forces(system, displacement_increment, internal_force);
     internal_force.compress(VectorOperation::add);
     const double norm = system.set_residual(external_force, internal_force);
     // Without external loads (a prescribed displacement), the residual is
@@ -75,6 +79,8 @@ namespace impm
       reference = internal_force.l2_norm();
     if (reference == 0.)
       reference = 1.;
+    if (rigid_contact != nullptr)
+      residual.contact_changed = rigid_contact->state_changed();
     residual.relative            = norm / reference;
     residual.norm                = norm;
     residual.internal_force_norm = internal_force.l2_norm();
@@ -92,6 +98,8 @@ namespace impm
     assembler.add_stiffness(system.matrix);
     if (ghost_stabilisation != nullptr)
       ghost_stabilisation->add_matrix(system, system.matrix);
+    if (rigid_contact != nullptr)
+      rigid_contact->add_matrix(system, system.matrix);
     system.matrix.compress(VectorOperation::add);
     if (checks_tangent)
       tangent_difference =
@@ -119,6 +127,10 @@ namespace impm
       assembler.add_internal_force(internal_force);
       if (ghost_stabilisation != nullptr)
         ghost_stabilisation->add_forces(displacement_increment, internal_force);
+      if (rigid_contact != nullptr)
+        rigid_contact->add_forces(system,
+                                  displacement_increment,
+                                  internal_force);
       internal_force.compress(VectorOperation::add);
       values.resize(rows.size());
       for (unsigned int r = 0; r < rows.size(); ++r)

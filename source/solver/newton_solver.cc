@@ -11,7 +11,8 @@ namespace impm
   {
     double order = std::numeric_limits<double>::max();
     for (unsigned int k = 1; k + 1 < residuals.size(); ++k)
-      if (residuals[k] < 1e-3 && residuals[k + 1] > 1e-10)
+      if (residuals[k] < 1e-3 && residuals[k + 1] > 1e-10 &&
+          !(k + 1 < contact_changed.size() && contact_changed[k + 1]))
         order =
           std::min(order, std::log(residuals[k + 1]) / std::log(residuals[k]));
     return order;
@@ -71,6 +72,7 @@ namespace impm
             return record;
           }
         record.residuals.push_back(residual.relative);
+        record.contact_changed.push_back(residual.contact_changed);
         record.last_norm                = residual.norm;
         record.last_internal_force_norm = residual.internal_force_norm;
         if (!std::isfinite(residual.relative))

@@ -43,6 +43,21 @@ namespace impm
     declare_parameters(ParameterHandler &prm);
 
     /**
+     * @brief Declare the entries of a shape (Shape, Lower corner, Upper
+     * corner, Center, Radius, Vertices) in the current subsection: shared by
+     * the bodies and the rigid bodies.
+     */
+    static void
+    declare_shape_parameters(ParameterHandler &prm);
+
+    /**
+     * @brief Read the entries of declare_shape_parameters() from the current
+     * subsection (messages name the entries after #name) and check them.
+     */
+    void
+    parse_shape(ParameterHandler &prm);
+
+    /**
      * @brief Read body @p number (1-based) from subsection "Body number".
      */
     void
@@ -104,6 +119,12 @@ namespace impm
     std::vector<BoundaryPiece>
     boundary_partition(const Point<dim>     &origin,
                        const Tensor<1, dim> &spacing) const;
+
+    /**
+     * @brief The name, shape and size: "Body 1: box [0 0] - [1 1]".
+     */
+    std::string
+    shape_description() const;
 
     /**
      * @brief A one-line description for the start-up report and summary.

@@ -7,6 +7,7 @@
 
 #include <impm/assembly/assembler.h>
 #include <impm/assembly/ghost_stabilisation.h>
+#include <impm/contact/rigid_contact.h>
 #include <impm/core/effects.h>
 #include <impm/core/parameters.h>
 #include <impm/grid/background_grid.h>
@@ -119,7 +120,9 @@ namespace impm
     MaterialPoints<dim>                      material_points;
     std::unique_ptr<GhostStabilisation<dim>> ghost_stabilisation;
     /** The F-bar treatment, if the scene asks for it. */
-    std::unique_ptr<FBar<dim>>                 f_bar;
+    std::unique_ptr<FBar<dim>> f_bar;
+    /** The contact with the rigid bodies, if the scene has any. */
+    std::unique_ptr<RigidContact<dim>>         rigid_contact;
     LoadStepSystem<dim>                        system;
     std::unique_ptr<Assembler<dim>>            assembler;
     std::unique_ptr<LinearSolver>              linear_solver;

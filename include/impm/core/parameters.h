@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 
 #include <impm/basis/basis_functions.h>
+#include <impm/contact/rigid_body.h>
 #include <impm/core/body.h>
 
 #include <array>
@@ -434,6 +435,9 @@ namespace impm
       Grid<dim> grid;
       /** The bodies (Body 1 ... Body n). */
       std::vector<impm::Body<dim>> bodies;
+      /** The rigid bodies (Rigid body 1 ... Rigid body n; none by
+       *  default). */
+      std::vector<impm::RigidBody<dim>> rigid_bodies;
       /** Material points. */
       MaterialPoints material_points;
       /** Whether gravity acts, and its acceleration (the Gravity effect's

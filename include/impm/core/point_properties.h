@@ -64,20 +64,27 @@ namespace impm
     unsigned int plastic_multiplier = absent;
     /** Index of the point's body, if the scene has several. */
     unsigned int body = absent;
+    /** First of the friction tractions of the domain's faces (dim per
+     *  face, 2 dim faces), if the scene has a rigid body with friction. */
+    unsigned int contact_traction = absent;
     /** Number of properties per point. */
     unsigned int n_properties = 0;
 
     /**
-     * @brief Lay out the optional properties after the @p n_fixed ones.
+     * @brief Lay out the optional properties after the @p n_fixed ones
+     * (@p n_contact_tractions: the friction tractions' entries, or 0).
      */
     void
     initialize(const unsigned int n_fixed,
                const bool         plastic,
-               const bool         several_bodies)
+               const bool         several_bodies,
+               const unsigned int n_contact_tractions = 0)
     {
       n_properties       = n_fixed;
       plastic_multiplier = plastic ? n_properties++ : absent;
       body               = several_bodies ? n_properties++ : absent;
+      contact_traction   = n_contact_tractions > 0 ? n_properties : absent;
+      n_properties += n_contact_tractions;
     }
   };
 

@@ -223,12 +223,15 @@ namespace impm
 
     /**
      * @brief The reactions R = f_int - f_ext on the constrained DoFs (the
-     * supports' force on the material) and their balance with the load.
-     * Collective.
+     * supports' force on the material) and their balance with the load and
+     * @p rigid_body_force, the force of the material on the rigid bodies,
+     * which carry load too. Collective.
      */
     Reactions
-    compute_reactions(const NodalVector &internal_force,
-                      const NodalVector &external_force) const;
+    compute_reactions(
+      const NodalVector    &internal_force,
+      const NodalVector    &external_force,
+      const Tensor<1, dim> &rigid_body_force = Tensor<1, dim>()) const;
 
     /**
      * @brief A one-line description of each face condition the scene sets.

@@ -8,6 +8,7 @@
 #include <impm/core/parameters.h>
 #include <impm/io/run_state.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -92,6 +93,11 @@ namespace impm
     void
     write_vtu_files(const double time, const std::string &stem);
 
+    /** @brief The `.pvd` record of the series, with each step's files as
+     *  its parts. */
+    void
+    write_pvd_record(std::ostream &out) const;
+
     /** @brief write() for the hdf5 format. */
     void
     write_hdf5_files(const double time, const std::string &stem);
@@ -105,6 +111,16 @@ namespace impm
     std::vector<bool>                       is_vector;
 
   public:
+    /**
+     * @brief Files of other parts of the scene to add to each step of the
+     * `.pvd` series beside the points (VTU format only): called on rank 0
+     * with the step's file suffix ("_00040"), it writes its files into the
+     * output directory and returns their names. ParaView shows them as the
+     * parts 1, 2, ... of each step.
+     */
+    std::function<std::vector<std::string>(const std::string &suffix)>
+      other_parts;
+
     /** @brief Save the series written so far (the records behind the
      *  `.pvd` or `.xdmf` file) into @p state under @p key. */
     void

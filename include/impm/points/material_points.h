@@ -60,12 +60,23 @@ namespace impm
      *   take the points that a checkpoint attached to the grid (which
      *   BackgroundGrid has loaded) and their mass at creation from this
      *   state.
+     * @param n_contact_tractions Entries per point for the friction
+     *   tractions of a rigid contact (PointLayout::contact_traction), or 0.
      */
     MaterialPoints(const std::vector<Body<dim>> &bodies,
                    const BackgroundGrid<dim>    &grid,
                    const MPI_Comm                communicator,
                    const Tensor<1, dim>         &gravity_from_the_start,
-                   const RunState               *checkpoint_state = nullptr);
+                   const RunState               *checkpoint_state    = nullptr,
+                   const unsigned int            n_contact_tractions = 0);
+
+    /**
+     * @brief Store the friction tractions of a rigid contact: @p tractions
+     * holds PointLayout's contact-traction entries of every local point,
+     * in the particle handler's order.
+     */
+    void
+    set_contact_tractions(const std::vector<double> &tractions);
 
     /**
      * @brief Attach the points to the grid's cells for a checkpoint (call

@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 
 #include <impm/base/plugin_list.h>
+#include <impm/contact/rigid_contact.h>
 #include <impm/core/parameters.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
@@ -51,6 +52,8 @@ namespace impm
     TimerOutput &timer;
     /** The processes of the run. */
     const MPI_Comm communicator;
+    /** The contact with the rigid bodies (nullptr: none). */
+    const RigidContact<dim> *rigid_contact = nullptr;
     /** The columns of StepMeasure values (set by the PostprocessorManager
      *  from all postprocessors' step_measure_columns()). */
     std::vector<std::string> step_measure_columns = {};

@@ -6,6 +6,7 @@
 
 #include <impm/assembly/assembler.h>
 #include <impm/assembly/ghost_stabilisation.h>
+#include <impm/contact/rigid_contact.h>
 #include <impm/grid/background_grid.h>
 #include <impm/solver/linear_solver.h>
 #include <impm/solver/newton_solver.h>
@@ -30,11 +31,14 @@ namespace impm
     /**
      * @brief The problem over the parts of a run.
      * @param ghost_stabilisation May be nullptr (no stabilisation).
+     * @param rigid_contact May be nullptr (no rigid bodies); its begin()
+     *   is the caller's, before begin().
      */
     LoadStepProblem(const BackgroundGrid<dim>     &grid,
                     LoadStepSystem<dim>           &system,
                     Assembler<dim>                &assembler,
                     const GhostStabilisation<dim> *ghost_stabilisation,
+                    RigidContact<dim>             *rigid_contact,
                     LinearSolver                  &linear_solver,
                     TimerOutput                   &timer);
 
@@ -99,11 +103,15 @@ namespace impm
       return displacement_increment;
     }
 
-    /** @brief The reactions of the current iterate, per face and component. */
+    /** @brief The reactions of the current iterate, per face and component,
+     *  balanced with the load and @p rigid_body_force (the material's
+     *  force on the rigid bodies). */
     typename BackgroundGrid<dim>::Reactions
-    reactions() const
+    reactions(const Tensor<1, dim> &rigid_body_force) const
     {
-      return grid.compute_reactions(internal_force, external_force);
+      return grid.compute_reactions(internal_force,
+                                    external_force,
+                                    rigid_body_force);
     }
 
   private:
@@ -111,6 +119,7 @@ namespace impm
     LoadStepSystem<dim>           &system;
     Assembler<dim>                &assembler;
     const GhostStabilisation<dim> *ghost_stabilisation;
+    RigidContact<dim>             *rigid_contact;
     LinearSolver                  &linear_solver;
     TimerOutput                   &timer;
 

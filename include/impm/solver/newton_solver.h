@@ -69,6 +69,10 @@ namespace impm
       /** The norm of the internal forces it is the difference to (N): the
        *  scale of its round-off. */
       double internal_force_norm = 0.;
+      /** Whether a contact changed its state (into or out of contact,
+       *  stick or slip) since the previous iterate: the residual is not
+       *  smooth between the two, and their contraction is not Newton's. */
+      bool contact_changed = false;
     };
 
     /** @brief Evaluate the residual of the current iterate. */
@@ -98,6 +102,9 @@ namespace impm
     NewtonOutcome outcome = NewtonOutcome::converged;
     /** Relative residual of each iterate, the start included. */
     std::vector<double> residuals;
+    /** For each iterate, whether a contact changed state since the one
+     *  before (Residual::contact_changed). */
+    std::vector<bool> contact_changed;
     /** The last iterate's residual norm and internal force norm (N). */
     double last_norm = 0., last_internal_force_norm = 0.;
     /** The linear solve of each iteration (the last may have failed). */
@@ -125,7 +132,9 @@ namespace impm
     /**
      * @brief The smallest observed order log r_{k+1} / log r_k over the
      * contractions near the solution (r_k < 1e-3) and above round-off
-     * (r_{k+1} > 1e-10): about 2 for full Newton. Returns the largest
+     * (r_{k+1} > 1e-10): about 2 for full Newton. Pairs between which a
+     * contact changed state are not counted (semi-smooth Newton is
+     * quadratic once the contact states are settled). Returns the largest
      * double if no pair qualifies (see is_measured()).
      */
     double

@@ -1,0 +1,186 @@
+#ifndef impm_contact_rigid_body_h
+#define impm_contact_rigid_body_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <impm/core/body.h>
+
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief A rigid body of a scene: a shape (box, disc, sphere or polygon,
+   * as a Body's) that moves through the grid by a prescribed displacement,
+   * ramped with the load factor, and touches the material points with a
+   * penalty contact and Coulomb friction (RigidContact).
+   *
+   * It knows its geometry: the signed distance of a point from its surface
+   * (negative inside), the outward normal of the nearest surface point and
+   * the derivative of that normal, which the consistent tangent of the
+   * contact needs.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class RigidBody
+  {
+  public:
+    /** Largest number of rigid bodies a scene can name. */
+    static constexpr unsigned int max_rigid_bodies = 4;
+
+    /** @brief How the body's surface resists sliding. */
+    enum class Friction
+    {
+      /** No tangential force. */
+      frictionless,
+      /** Coulomb: stick while the tangential traction is below the
+       *  friction coefficient times the pressure, slip at it. */
+      coulomb,
+      /** No slip at any tangential traction. */
+      rough
+    };
+
+    /** The scene's names of the friction laws, in enum order. */
+    static constexpr std::array<const char *, 3> friction_names = {
+      {"frictionless", "coulomb", "rough"}};
+
+    /**
+     * @brief Declare the entries of subsections "Rigid body k" (k = 1 ...
+     * 4): the shape, the displacement, the friction and the penalty.
+     */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * @brief Read rigid body @p number (1-based) from subsection "Rigid
+     * body number".
+     */
+    void
+    parse_parameters(ParameterHandler &prm, const unsigned int number);
+
+    /**
+     * @brief Where a point is relative to the surface of the body.
+     */
+    struct Proximity
+    {
+      /** Signed distance from the surface, negative inside. */
+      double gap = std::numeric_limits<double>::max();
+      /** Outward unit normal of the nearest surface point. */
+      Tensor<1, dim> normal;
+      /** The derivative of the normal with respect to the point
+       *  (symmetric; zero on flat parts, (I - n n)/r on a disc or
+       *  sphere of radius r). */
+      Tensor<2, dim> normal_derivative;
+      /** The part of the face (Facing) that presses on the surface, in
+       *  [0, 1]: 1 but where a face overlaps a box's edge. */
+      double overlap = 1.;
+      /** Its derivative with respect to the point. */
+      Tensor<1, dim> overlap_gradient;
+    };
+
+    /**
+     * @brief A material point's domain face, for proximity(): which sides
+     * of a box or polygon may push it.
+     */
+    struct Facing
+    {
+      /** The face's outward normal. */
+      Tensor<1, dim> normal;
+      /** Its centre at the start of the step, in the body's frame (minus
+       *  the body's displacement at the start of the step). */
+      Point<dim> start;
+      /** How far inside a side's plane the start may lie (the penalty's
+       *  penetration of the step before). */
+      double tolerance = 0.;
+      /** The domain's half-lengths (those along the face count). */
+      Tensor<1, dim> half_length;
+    };
+
+    /**
+     * @brief The proximity of @p x to the body displaced by @p
+     * displacement. Exact inside the body (where the contact acts); outside
+     * only the gap's sign and size are used.
+     *
+     * With @p facing (a material point's domain face), a point is measured
+     * against the shallowest of the flat sides of a box or polygon whose
+     * normal opposes the face's and in front of which the face started the
+     * step (none: not in contact). So a face under a box's corner is pushed
+     * back through the side it came through, not through whichever side is
+     * nearest (which flips between Newton iterates near the corner's
+     * diagonal), and a face the body has passed over sideways is not pushed
+     * through the far side. On a box, a face that overlaps a side's edge
+     * presses with the part of it that overlaps (Proximity::overlap), so
+     * that contact begins and ends gradually as a face slides over an edge.
+     * Discs and spheres have one normal and ignore it.
+     */
+    Proximity
+    proximity(const Point<dim>     &x,
+              const Tensor<1, dim> &displacement,
+              const Facing         *facing = nullptr) const;
+
+    /**
+     * @brief The body's displacement at load factor @p load_factor.
+     */
+    Tensor<1, dim>
+    displacement_at(const double load_factor) const
+    {
+      return load_factor * displacement;
+    }
+
+    /**
+     * @brief The smallest box holding the body displaced by @p displacement.
+     */
+    std::pair<Point<dim>, Point<dim>>
+    bounding_box(const Tensor<1, dim> &displacement) const;
+
+    /** @brief The body's surface as polygons, for ParaView. */
+    struct Surface
+    {
+      /** The vertices. */
+      std::vector<Point<dim>> vertices;
+      /** Each face: its vertices' indices in order (in 2D one polygon,
+       *  the body's outline; in 3D quadrilaterals). */
+      std::vector<std::vector<unsigned int>> faces;
+    };
+
+    /**
+     * @brief The surface of the body displaced by @p displacement: a box's
+     * outline or faces, a polygon, and discs and spheres as polygons of 64
+     * sides or 16 x 32 quadrilaterals.
+     */
+    Surface
+    surface(const Tensor<1, dim> &displacement) const;
+
+    /** @brief A one-line description for the start-up report. */
+    std::string
+    description() const;
+
+    /** Name in messages and columns ("Rigid body 1", ...). */
+    std::string name;
+    /** The shape (only its geometry entries are used). */
+    Body<dim> outline;
+    /** Displacement at load factor 1. */
+    Tensor<1, dim> displacement;
+    /** The friction law. */
+    Friction friction = Friction::frictionless;
+    /** Coulomb friction coefficient. */
+    double friction_coefficient = 0.;
+    /** Penalty factor: the normal and tangential stiffness per area is
+     *  this times Young's modulus of the touching point's material over
+     *  the smallest cell size. */
+    double penalty_factor = 100.;
+    /** Tangential penalty factor: the stick stiffness per area is this
+     *  times E / h. */
+    double tangential_penalty_factor = 10.;
+  };
+} // namespace impm
+
+#endif

@@ -1,0 +1,214 @@
+#ifndef impm_contact_rigid_contact_h
+#define impm_contact_rigid_contact_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <impm/contact/rigid_body.h>
+#include <impm/grid/background_grid.h>
+#include <impm/points/material_points.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  template <int dim>
+  class LoadStepSystem;
+
+  /**
+   * @brief Contact between the material points and the scene's rigid
+   * bodies: a penalty on the overlap of the points' GIMP domains with the
+   * bodies, and Coulomb friction with a stick/slip return, inside the full
+   * Newton solve with the consistent tangent of both.
+   *
+   * Each face of a point's domain that lies near a rigid body at the start
+   * of an attempt becomes a contact probe: its centre moves with the
+   * face's mean displacement (the face weights of BasisEvaluator), and
+   * where it is inside the body and faces it (its outward normal against
+   * the body's normal n), it carries a uniform pressure p = -k g (g the
+   * signed distance, k = alpha E / h per area) over its area projected on
+   * the body's surface, A c with c = -n_f . n. The friction traction is a
+   * return of the trial traction t^n + k_t (relative slip in the step),
+   * projected on the tangent plane, to |t| <= mu p. The contact force acts
+   * on the material as a load that depends on the displacement: it is
+   * added to the internal force with the opposite sign, and its derivative
+   * to the matrix, so Testing/Check tangent checks both.
+   *
+   * A converged step stores each face's friction traction in the point
+   * (PointLayout::contact_traction, only in scenes with friction) and sums
+   * the force on each body. A scene without rigid bodies creates none of
+   * this.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class RigidContact
+  {
+  public:
+    /** Values of the friction traction per point: dim per face. */
+    static constexpr unsigned int traction_entries = 2 * dim * dim;
+
+    /**
+     * @brief Constructor.
+     * @param rigid_bodies The scene's rigid bodies (at least one).
+     * @param grid The background grid.
+     */
+    RigidContact(const std::vector<RigidBody<dim>> &rigid_bodies,
+                 const BackgroundGrid<dim>         &grid);
+
+    /**
+     * @brief Whether any of @p rigid_bodies has friction, so that the
+     * points store their faces' friction tractions.
+     */
+    static bool
+    has_friction(const std::vector<RigidBody<dim>> &rigid_bodies);
+
+    /**
+     * @brief Refuse a scene whose material points start inside a rigid
+     * body: one line naming the rigid body and a point. Collective.
+     */
+    void
+    check_start(const MaterialPoints<dim> &material_points) const;
+
+    /**
+     * @brief Start an attempt from load factor @p start to @p target: the
+     * bodies move to their displacement at @p target, and the faces of
+     * the points near them (within a cell of the bodies' boxes at @p start
+     * and @p target) become this attempt's probes.
+     * @param material_points The points at the start of the step.
+     * @param system The step's system (its point steps and face weights).
+     */
+    void
+    begin(const MaterialPoints<dim> &material_points,
+          const LoadStepSystem<dim> &system,
+          const double               start,
+          const double               target);
+
+    /**
+     * @brief Evaluate the contact at the displacement increment @p
+     * increment and subtract its force on the material from @p
+     * internal_force (before its compress()).
+     */
+    void
+    add_forces(const LoadStepSystem<dim> &system,
+               const NodalVector         &increment,
+               NodalVector               &internal_force);
+
+    /**
+     * @brief Whether, on any process, a probe changed its state (into or
+     * out of contact, stick or slip) in the last add_forces() against the
+     * one before in the same attempt. Collective.
+     */
+    bool
+    state_changed() const;
+
+    /**
+     * @brief Add the derivative of the forces of the last add_forces() to
+     * the system matrix (before its compress()).
+     */
+    void
+    add_matrix(const LoadStepSystem<dim>      &system,
+               TrilinosWrappers::SparseMatrix &matrix) const;
+
+    /**
+     * @brief After a converged step: store each face's friction traction
+     * in the points (scenes with friction) and sum the force on each body.
+     * Collective.
+     */
+    void
+    accept(MaterialPoints<dim> &material_points);
+
+    /** @brief The force of the material on a body, in parts. */
+    struct BodyForce
+    {
+      /** The total force. */
+      Tensor<1, dim> total;
+      /** Its part normal to the body's surface (the pressures). */
+      Tensor<1, dim> normal;
+      /** Its part along the surface (friction). */
+      Tensor<1, dim> tangential;
+      /** Number of faces in contact. */
+      unsigned int n_contacts = 0;
+      /** Number of them that slip (Coulomb friction at its limit). */
+      unsigned int n_slipping = 0;
+    };
+
+    /** @brief The force on each body at the last accepted step. */
+    const std::vector<BodyForce> &
+    body_forces() const
+    {
+      return forces_on_bodies;
+    }
+
+    /** @brief The rigid bodies. */
+    const std::vector<RigidBody<dim>> &
+    bodies() const
+    {
+      return rigid_bodies;
+    }
+
+    /** @brief One line per rigid body for the start-up report. */
+    std::vector<std::string>
+    descriptions() const;
+
+  private:
+    /** @brief A face of a point's domain near a rigid body, in one
+     *  attempt. */
+    struct Probe
+    {
+      /** Index of the point (solver order). */
+      unsigned int point;
+      /** Index of the rigid body. */
+      unsigned int body;
+      /** Face: 2 axis + (1 if on the + side). */
+      unsigned int face;
+      /** The face's centre at the start of the step. */
+      Point<dim> start_position;
+      /** The face's outward normal. */
+      Tensor<1, dim> face_normal;
+      /** The face as the body's proximity() needs it. */
+      typename RigidBody<dim>::Facing facing;
+      /** The face's area (length in 2D). */
+      double area;
+      /** Normal and tangential penalty stiffness per area. */
+      double stiffness, tangential_stiffness;
+      /** The friction traction at the start of the step. */
+      Tensor<1, dim> previous_traction;
+      /** The face weights over the point's support (they sum to one). */
+      std::array<double, PointSupport<dim>::max_nodes> weights;
+
+      /** Of the last evaluation: whether in contact and slipping, the
+       *  force on the
+       *  material (normal and friction parts), the friction traction
+       *  and the derivative of the force with respect to the face's
+       *  position. */
+      bool active = false, slipping = false;
+      /** Whether the last evaluation changed active or slipping. */
+      bool           changed = false;
+      Tensor<1, dim> normal_force, friction_force, traction;
+      Tensor<2, dim> force_derivative;
+    };
+
+    /** @brief Evaluate @p probe at the face centre @p position. */
+    void
+    evaluate(Probe &probe, const Point<dim> &position) const;
+
+    const std::vector<RigidBody<dim>> &rigid_bodies;
+    const BackgroundGrid<dim>         &grid;
+    /** Whether the points store friction tractions. */
+    const bool friction;
+    /** The bodies' displacement at the attempt's target, and its change
+     *  over the attempt. */
+    std::vector<Tensor<1, dim>> displacement, displacement_increment;
+    std::vector<Probe>          probes;
+    std::vector<BodyForce>      forces_on_bodies;
+  };
+} // namespace impm
+
+#endif

@@ -1,0 +1,419 @@
+#include <impm/contact/rigid_body.h>
+#include <impm/core/parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace impm
+{
+  template <int dim>
+  void
+  RigidBody<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    for (unsigned int k = 1; k <= max_rigid_bodies; ++k)
+      {
+        prm.enter_subsection("Rigid body " + std::to_string(k));
+        Body<dim>::declare_shape_parameters(prm);
+        prm.declare_entry("Displacement",
+                          "0, 0",
+                          Patterns::List(Patterns::Double(), 2, 3),
+                          "The body's displacement at the full load, one "
+                          "component per dimension, in m; ramped with the "
+                          "load factor like every load.");
+        prm.declare_entry(
+          "Friction",
+          "frictionless",
+          Patterns::Selection("frictionless|coulomb|rough"),
+          "How the surface resists sliding: frictionless, coulomb (stick "
+          "below 'Friction coefficient' times the pressure, slip at it) or "
+          "rough (no slip).");
+        prm.declare_entry("Friction coefficient",
+                          "0",
+                          Patterns::Double(0.),
+                          "Coulomb friction coefficient mu >= 0 (Friction = "
+                          "coulomb).");
+        prm.declare_entry(
+          "Penalty factor",
+          "100",
+          Patterns::Double(0.),
+          "alpha > 0: the contact's normal and tangential stiffness per "
+          "area is alpha E / h (E: Young's modulus of the touching "
+          "point's material, h: the smallest cell size), so a pressure p "
+          "lets the material into the body by p h / (alpha E). The default "
+          "100 keeps the error of the plate benchmark under 1 % "
+          "(doc/benchmarks).");
+        prm.declare_entry(
+          "Tangential penalty factor",
+          "10",
+          Patterns::Double(0.),
+          "alpha_t > 0: the stiffness per area of a sticking contact "
+          "against sliding is alpha_t E / h, so a sticking face creeps by "
+          "t h / (alpha_t E) under a friction traction t. Lower than the "
+          "normal factor: with alpha_t = 100 Newton cycles between stick "
+          "and slip on a block resting on a Coulomb floor "
+          "(doc/benchmarks).");
+        prm.leave_subsection();
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  RigidBody<dim>::parse_parameters(ParameterHandler  &prm,
+                                   const unsigned int number)
+  {
+    name = "Rigid body " + std::to_string(number);
+    prm.enter_subsection(name);
+    outline.name = name;
+    outline.parse_shape(prm);
+    const auto values = Parameters::get_vector(prm, name, "Displacement", dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      displacement[d] = values[d];
+    friction             = static_cast<Friction>(Parameters::selection_index(
+      friction_names, name + "/Friction", prm.get("Friction")));
+    friction_coefficient = prm.get_double("Friction coefficient");
+    if (friction == Friction::coulomb && !(friction_coefficient > 0.))
+      Parameters::bad_value(name + "/Friction coefficient",
+                            prm.get("Friction coefficient"),
+                            "Coulomb friction needs a coefficient > 0 (or "
+                            "Friction = frictionless).");
+    penalty_factor = prm.get_double("Penalty factor");
+    if (!(penalty_factor > 0.))
+      Parameters::bad_value(name + "/Penalty factor",
+                            prm.get("Penalty factor"),
+                            "it must be > 0.");
+    tangential_penalty_factor = prm.get_double("Tangential penalty factor");
+    if (friction != Friction::frictionless && !(tangential_penalty_factor > 0.))
+      Parameters::bad_value(name + "/Tangential penalty factor",
+                            prm.get("Tangential penalty factor"),
+                            "it must be > 0 with friction.");
+    prm.leave_subsection();
+  }
+
+
+
+  namespace
+  {
+    /** The outer product a b^T. */
+    template <int dim>
+    Tensor<2, dim>
+    outer(const Tensor<1, dim> &a, const Tensor<1, dim> &b)
+    {
+      Tensor<2, dim> product;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          product[i][j] = a[i] * b[j];
+      return product;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  typename RigidBody<dim>::Proximity
+  RigidBody<dim>::proximity(const Point<dim>     &x,
+                            const Tensor<1, dim> &body_displacement,
+                            const Facing         *facing) const
+  {
+    const Point<dim> y = x - body_displacement;
+    Proximity        result;
+    using Shape = typename Body<dim>::Shape;
+    if (outline.shape == Shape::box)
+      {
+        const Point<dim> &a = outline.lower_corner, &b = outline.upper_corner;
+        if (facing != nullptr)
+          {
+            // The sides that oppose the face, in front of which it started
+            // the step: the shallowest one that the face overlaps. The face
+            // [y_j - l_j, y_j + l_j] in each direction j along the side
+            // presses on the part it overlaps, so it leaves or enters
+            // contact over an edge gradually.
+            double depth = std::numeric_limits<double>::max();
+            for (unsigned int d = 0; d < dim; ++d)
+              for (const double sign : {-1., 1.})
+                {
+                  const double plane = sign < 0 ? a[d] : b[d];
+                  if (!(sign * facing->normal[d] < 0. &&
+                        sign * (facing->start[d] - plane) >=
+                          -facing->tolerance))
+                    continue;
+                  const double to_face = sign * (plane - y[d]);
+                  if (to_face < 0. || to_face > b[d] - a[d] || to_face >= depth)
+                    continue;
+                  double         overlap = 1.;
+                  Tensor<1, dim> factors, slopes;
+                  for (unsigned int j = 0; j < dim; ++j)
+                    {
+                      factors[j] = 1.;
+                      if (j == d)
+                        continue;
+                      const double l    = facing->half_length[j];
+                      const double high = std::min(y[j] + l, b[j]);
+                      const double low  = std::max(y[j] - l, a[j]);
+                      factors[j]        = std::max(high - low, 0.) / (2. * l);
+                      if (factors[j] > 0.)
+                        slopes[j] = ((y[j] + l < b[j] ? 1. : 0.) -
+                                     (y[j] - l > a[j] ? 1. : 0.)) /
+                                    (2. * l);
+                      overlap *= factors[j];
+                    }
+                  if (!(overlap > 0.))
+                    continue;
+                  depth            = to_face;
+                  result.gap       = -depth;
+                  result.normal    = Tensor<1, dim>();
+                  result.normal[d] = sign;
+                  result.overlap   = overlap;
+                  for (unsigned int j = 0; j < dim; ++j)
+                    {
+                      double product = slopes[j];
+                      for (unsigned int k = 0; k < dim; ++k)
+                        if (k != j)
+                          product *= factors[k];
+                      result.overlap_gradient[j] = product;
+                    }
+                }
+            return result;
+          }
+        bool inside = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          inside = inside && y[d] >= a[d] && y[d] <= b[d];
+        if (inside)
+          {
+            // The nearest face: a flat surface.
+            double depth = std::numeric_limits<double>::max();
+            for (unsigned int d = 0; d < dim; ++d)
+              for (const double sign : {-1., 1.})
+                {
+                  const double to_face = sign < 0 ? y[d] - a[d] : b[d] - y[d];
+                  if (to_face < depth)
+                    {
+                      depth            = to_face;
+                      result.normal    = Tensor<1, dim>();
+                      result.normal[d] = sign;
+                    }
+                }
+            result.gap = -depth;
+            return result;
+          }
+        // Outside: the nearest point is y clamped to the box.
+        Tensor<1, dim> offset;
+        Tensor<2, dim> clamped;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double q = std::clamp(y[d], a[d], b[d]);
+            offset[d]      = y[d] - q;
+            clamped[d][d]  = q != y[d] ? 1. : 0.;
+          }
+        result.gap    = offset.norm();
+        result.normal = offset / result.gap;
+        result.normal_derivative =
+          (clamped - outer(result.normal, result.normal)) / result.gap;
+        return result;
+      }
+    if (outline.shape == Shape::disc || outline.shape == Shape::sphere)
+      {
+        const Tensor<1, dim> offset = y - outline.center;
+        const double         r      = offset.norm();
+        result.gap                  = r - outline.radius;
+        if (r == 0.)
+          {
+            result.normal[0] = 1.;
+            return result;
+          }
+        result.normal = offset / r;
+        result.normal_derivative =
+          (Tensor<2, dim>(unit_symmetric_tensor<dim>()) -
+           outer(result.normal, result.normal)) /
+          r;
+        return result;
+      }
+
+    // Polygon (2D): the nearest point over the edges.
+    const auto &vertices   = outline.vertices;
+    const auto  n          = vertices.size();
+    double      twice_area = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const Point<dim> &p = vertices[i], &q = vertices[(i + 1) % n];
+        twice_area += p[0] * q[1] - q[0] * p[1];
+      }
+    const double   orientation = twice_area > 0. ? 1. : -1.;
+    double         distance    = std::numeric_limits<double>::max();
+    bool           at_vertex   = false;
+    Point<dim>     nearest;
+    Tensor<1, dim> edge_normal;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const Point<dim>    &p = vertices[i], &q = vertices[(i + 1) % n];
+        const Tensor<1, dim> edge = q - p;
+        const double         s =
+          std::clamp(((y - p) * edge) / edge.norm_square(), 0., 1.);
+        const Point<dim> on_edge = p + s * edge;
+        const double     d       = y.distance(on_edge);
+        if (d < distance)
+          {
+            distance       = d;
+            nearest        = on_edge;
+            at_vertex      = s == 0. || s == 1.;
+            edge_normal[0] = orientation * edge[1] / edge.norm();
+            edge_normal[1] = -orientation * edge[0] / edge.norm();
+          }
+      }
+    const bool inside = outline.contains(y);
+    if (inside && facing != nullptr)
+      {
+        // The depth below the nearest edge line of those facing: a flat
+        // surface (exact for a convex polygon).
+        double depth = std::numeric_limits<double>::max();
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const Point<dim>    &p = vertices[i], &q = vertices[(i + 1) % n];
+            const Tensor<1, dim> edge = q - p;
+            Tensor<1, dim>       normal;
+            normal[0] = orientation * edge[1] / edge.norm();
+            normal[1] = -orientation * edge[0] / edge.norm();
+            if (!(normal * facing->normal < 0. &&
+                  normal * (facing->start - p) >= -facing->tolerance))
+              continue;
+            const double to_edge = normal * (p - y);
+            if (to_edge >= 0. && to_edge < depth)
+              {
+                depth         = to_edge;
+                result.normal = normal;
+              }
+          }
+        if (depth < std::numeric_limits<double>::max())
+          result.gap = -depth;
+        return result;
+      }
+    result.gap = inside ? -distance : distance;
+    if (!at_vertex || distance == 0.)
+      {
+        result.normal = edge_normal;
+        return result;
+      }
+    // At a vertex the normal turns with the point.
+    result.normal            = (inside ? nearest - y : y - nearest) / distance;
+    result.normal_derivative = (Tensor<2, dim>(unit_symmetric_tensor<dim>()) -
+                                outer(result.normal, result.normal)) /
+                               result.gap;
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::pair<Point<dim>, Point<dim>>
+  RigidBody<dim>::bounding_box(const Tensor<1, dim> &body_displacement) const
+  {
+    auto box = outline.bounding_box();
+    box.first += body_displacement;
+    box.second += body_displacement;
+    return box;
+  }
+
+
+
+  template <int dim>
+  typename RigidBody<dim>::Surface
+  RigidBody<dim>::surface(const Tensor<1, dim> &body_displacement) const
+  {
+    Surface result;
+    using Shape   = typename Body<dim>::Shape;
+    auto &corners = result.vertices;
+    if (outline.shape == Shape::box)
+      {
+        const Point<dim> &a = outline.lower_corner, &b = outline.upper_corner;
+        // Vertex k has coordinate d from b where bit d of k is set.
+        for (unsigned int k = 0; k < (1u << dim); ++k)
+          {
+            Point<dim> vertex;
+            for (unsigned int d = 0; d < dim; ++d)
+              vertex[d] = (k >> d) & 1 ? b[d] : a[d];
+            corners.push_back(vertex);
+          }
+        if (dim == 2)
+          result.faces = {{0, 1, 3, 2}};
+        else
+          result.faces = {{0, 2, 6, 4},
+                          {1, 5, 7, 3},
+                          {0, 4, 5, 1},
+                          {2, 3, 7, 6},
+                          {0, 1, 3, 2},
+                          {4, 6, 7, 5}};
+      }
+    else if (outline.shape == Shape::polygon)
+      {
+        corners = outline.vertices;
+        result.faces.emplace_back();
+        for (unsigned int i = 0; i < corners.size(); ++i)
+          result.faces.back().push_back(i);
+      }
+    else if (dim == 2)
+      {
+        const unsigned int n = 64;
+        result.faces.emplace_back();
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double angle  = 2. * numbers::PI * i / n;
+            Point<dim>   vertex = outline.center;
+            vertex[0] += outline.radius * std::cos(angle);
+            vertex[1] += outline.radius * std::sin(angle);
+            corners.push_back(vertex);
+            result.faces.back().push_back(i);
+          }
+      }
+    else
+      {
+        const unsigned int n_latitudes = 16, n_longitudes = 32;
+        for (unsigned int i = 0; i <= n_latitudes; ++i)
+          for (unsigned int j = 0; j < n_longitudes; ++j)
+            {
+              const double theta  = numbers::PI * i / n_latitudes;
+              const double phi    = 2. * numbers::PI * j / n_longitudes;
+              Point<dim>   vertex = outline.center;
+              vertex[0] += outline.radius * std::sin(theta) * std::cos(phi);
+              vertex[1] += outline.radius * std::sin(theta) * std::sin(phi);
+              vertex[dim - 1] += outline.radius * std::cos(theta);
+              corners.push_back(vertex);
+            }
+        for (unsigned int i = 0; i < n_latitudes; ++i)
+          for (unsigned int j = 0; j < n_longitudes; ++j)
+            {
+              const unsigned int next = (j + 1) % n_longitudes;
+              result.faces.push_back({i * n_longitudes + j,
+                                      i * n_longitudes + next,
+                                      (i + 1) * n_longitudes + next,
+                                      (i + 1) * n_longitudes + j});
+            }
+      }
+    for (auto &vertex : corners)
+      vertex += body_displacement;
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::string
+  RigidBody<dim>::description() const
+  {
+    std::ostringstream out;
+    out << outline.shape_description() << ", moved by [" << displacement
+        << "], " << friction_names[static_cast<unsigned int>(friction)];
+    if (friction == Friction::coulomb)
+      out << " mu = " << friction_coefficient;
+    out << ", penalty factor " << penalty_factor;
+    if (friction != Friction::frictionless)
+      out << " (tangential " << tangential_penalty_factor << ")";
+    return out.str();
+  }
+
+
+
+  template class RigidBody<2>;
+  template class RigidBody<3>;
+} // namespace impm

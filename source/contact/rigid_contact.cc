@@ -1,0 +1,394 @@
+#include <impm/base/errors.h>
+#include <impm/contact/rigid_contact.h>
+#include <impm/core/point_properties.h>
+#include <impm/system/load_step_system.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace impm
+{
+  namespace
+  {
+    /** The outer product a b^T. */
+    template <int dim>
+    Tensor<2, dim>
+    outer(const Tensor<1, dim> &a, const Tensor<1, dim> &b)
+    {
+      Tensor<2, dim> product;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          product[i][j] = a[i] * b[j];
+      return product;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  RigidContact<dim>::RigidContact(
+    const std::vector<RigidBody<dim>> &rigid_bodies,
+    const BackgroundGrid<dim>         &grid)
+    : rigid_bodies(rigid_bodies)
+    , grid(grid)
+    , friction(has_friction(rigid_bodies))
+    , displacement(rigid_bodies.size())
+    , displacement_increment(rigid_bodies.size())
+    , forces_on_bodies(rigid_bodies.size())
+  {}
+
+
+
+  template <int dim>
+  bool
+  RigidContact<dim>::has_friction(
+    const std::vector<RigidBody<dim>> &rigid_bodies)
+  {
+    for (const auto &body : rigid_bodies)
+      if (body.friction != RigidBody<dim>::Friction::frictionless)
+        return true;
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::check_start(
+    const MaterialPoints<dim> &material_points) const
+  {
+    std::string message;
+    for (const auto &point : material_points.particles())
+      {
+        for (const auto &body : rigid_bodies)
+          if (body.proximity(point.get_location(), Tensor<1, dim>()).gap < 0.)
+            {
+              std::ostringstream out;
+              out << "Material point " << point.get_id() << " at ("
+                  << point.get_location() << ") starts inside " << body.name
+                  << ": a rigid body must start outside the bodies (move it "
+                     "or its 'Lower corner', 'Center' or 'Vertices').";
+              message = out.str();
+              break;
+            }
+        if (!message.empty())
+          break;
+      }
+    throw_if_any_failed(message,
+                        grid.get_triangulation().get_communicator(),
+                        false);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::begin(const MaterialPoints<dim> &material_points,
+                           const LoadStepSystem<dim> &system,
+                           const double               start,
+                           const double               target)
+  {
+    const auto &cell_size     = grid.cartesian().cell_size;
+    double      smallest_cell = cell_size[0], largest_cell = cell_size[0];
+    for (unsigned int d = 1; d < dim; ++d)
+      {
+        smallest_cell = std::min(smallest_cell, cell_size[d]);
+        largest_cell  = std::max(largest_cell, cell_size[d]);
+      }
+    // The region each body may touch in this attempt: its boxes at the
+    // start and the target, grown by a cell.
+    std::vector<std::pair<Point<dim>, Point<dim>>> reach;
+    for (unsigned int b = 0; b < rigid_bodies.size(); ++b)
+      {
+        const auto &body = rigid_bodies[b];
+        displacement[b]  = body.displacement_at(target);
+        displacement_increment[b] =
+          displacement[b] - body.displacement_at(start);
+        auto       box   = body.bounding_box(displacement[b]);
+        const auto other = body.bounding_box(body.displacement_at(start));
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            box.first[d] =
+              std::min(box.first[d], other.first[d]) - largest_cell;
+            box.second[d] =
+              std::max(box.second[d], other.second[d]) + largest_cell;
+          }
+        reach.push_back(box);
+      }
+
+    const unsigned int traction_index =
+      material_points.layout().contact_traction;
+    probes.clear();
+    unsigned int p = 0;
+    for (const auto &point : material_points.particles())
+      {
+        const auto            properties = point.get_properties();
+        const PointState<dim> state(properties);
+        const Point<dim>      position    = point.get_location();
+        const Tensor<1, dim>  half_length = state.domain_half_length();
+        for (unsigned int face = 0; face < 2 * dim; ++face)
+          {
+            const unsigned int axis   = face / 2;
+            const double       sign   = face % 2 == 1 ? 1. : -1.;
+            Point<dim>         centre = position;
+            centre[axis] += sign * half_length[axis];
+            for (unsigned int b = 0; b < rigid_bodies.size(); ++b)
+              {
+                bool near = true;
+                for (unsigned int d = 0; d < dim; ++d)
+                  near = near && centre[d] >= reach[b].first[d] &&
+                         centre[d] <= reach[b].second[d];
+                if (!near)
+                  continue;
+                Probe probe;
+                probe.point             = p;
+                probe.body              = b;
+                probe.face              = face;
+                probe.start_position    = centre;
+                probe.face_normal       = Tensor<1, dim>();
+                probe.face_normal[axis] = sign;
+                probe.facing.normal     = probe.face_normal;
+                probe.facing.start =
+                  centre - rigid_bodies[b].displacement_at(start);
+                // The penalty lets a face in by p h / (alpha E), less than
+                // h / alpha for any pressure below E.
+                probe.facing.tolerance =
+                  smallest_cell / rigid_bodies[b].penalty_factor;
+                probe.facing.half_length = half_length;
+                probe.area               = 1.;
+                for (unsigned int d = 0; d < dim; ++d)
+                  if (d != axis)
+                    probe.area *= 2. * half_length[d];
+                const double modulus =
+                  system.point_steps[p].material->elastic_modulus();
+                probe.stiffness =
+                  rigid_bodies[b].penalty_factor * modulus / smallest_cell;
+                probe.tangential_stiffness =
+                  rigid_bodies[b].tangential_penalty_factor * modulus /
+                  smallest_cell;
+                if (traction_index != PointLayout::absent)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    probe.previous_traction[d] =
+                      properties[traction_index + face * dim + d];
+                system.face_weights(
+                  p, position, half_length, axis, sign, probe.weights);
+                probes.push_back(probe);
+              }
+          }
+        ++p;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::evaluate(Probe &probe, const Point<dim> &position) const
+  {
+    const RigidBody<dim> &body = rigid_bodies[probe.body];
+    const auto            proximity =
+      body.proximity(position, displacement[probe.body], &probe.facing);
+    const Tensor<1, dim> &n = proximity.normal;
+    const Tensor<2, dim> &H = proximity.normal_derivative;
+    // The face's share of the body's surface: its area projected on the
+    // tangent plane.
+    const double c = -(probe.face_normal * n);
+    probe.active   = proximity.gap <= 0. && c > 0.;
+    probe.slipping = false;
+    if (!probe.active)
+      {
+        probe.normal_force     = Tensor<1, dim>();
+        probe.friction_force   = Tensor<1, dim>();
+        probe.traction         = Tensor<1, dim>();
+        probe.force_derivative = Tensor<2, dim>();
+        return;
+      }
+    const double          k        = probe.stiffness;
+    const double          A        = probe.area;
+    const double          pressure = -k * proximity.gap;
+    const double          w        = proximity.overlap;
+    const Tensor<1, dim> &dw       = proximity.overlap_gradient;
+    const Tensor<1, dim>  dc       = -(H * probe.face_normal);
+    const Tensor<2, dim>  identity = unit_symmetric_tensor<dim>();
+    // The pressure on the part w of the face's area projected on the
+    // tangent plane, A c w.
+    probe.normal_force = A * c * w * pressure * n;
+    // d(A c w p n)/dx, with dp/dx = -k n and dn/dx = H.
+    probe.force_derivative =
+      A * (outer(n, w * (-k * c * n + pressure * dc) + c * pressure * dw) +
+           c * w * pressure * H);
+
+    probe.traction       = Tensor<1, dim>();
+    probe.friction_force = Tensor<1, dim>();
+    if (body.friction == RigidBody<dim>::Friction::frictionless)
+      return;
+    // Trial traction: the traction of the step before and the slip of the
+    // face against the body in this step, on the tangent plane.
+    const Tensor<1, dim> slip =
+      (position - probe.start_position) - displacement_increment[probe.body];
+    const double         kt         = probe.tangential_stiffness;
+    const Tensor<1, dim> v          = probe.previous_traction + kt * slip;
+    const Tensor<2, dim> projection = identity - outer(n, n);
+    const Tensor<1, dim> trial      = projection * v;
+    const Tensor<2, dim> d_trial =
+      kt * projection - (n * v) * H - outer(n, H * v);
+    const double   trial_norm = trial.norm();
+    const double   limit      = body.friction_coefficient * pressure;
+    Tensor<2, dim> d_traction;
+    if (body.friction == RigidBody<dim>::Friction::rough || trial_norm <= limit)
+      {
+        probe.traction = trial;
+        d_traction     = d_trial;
+      }
+    else
+      {
+        probe.slipping         = true;
+        const Tensor<1, dim> m = trial / trial_norm;
+        probe.traction         = limit * m;
+        d_traction =
+          outer(m, -body.friction_coefficient * k * n) +
+          (limit / trial_norm) * ((identity - outer(m, m)) * d_trial);
+      }
+    probe.friction_force = -A * c * w * probe.traction;
+    probe.force_derivative -=
+      A * (outer(probe.traction, w * dc + c * dw) + c * w * d_traction);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::add_forces(const LoadStepSystem<dim> &system,
+                                const NodalVector         &increment,
+                                NodalVector               &internal_force)
+  {
+    for (Probe &probe : probes)
+      {
+        const PointStep<dim> &step     = system.point_steps[probe.point];
+        Point<dim>            position = probe.start_position;
+        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            position[i] += probe.weights[v] *
+                           increment.local_element(step.dofs[v * dim + i]);
+        const bool was_active = probe.active, was_slipping = probe.slipping;
+        evaluate(probe, position);
+        probe.changed =
+          probe.active != was_active || probe.slipping != was_slipping;
+        if (!probe.active)
+          continue;
+        const Tensor<1, dim> force = probe.normal_force + probe.friction_force;
+        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            internal_force.local_element(step.dofs[v * dim + i]) -=
+              probe.weights[v] * force[i];
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  RigidContact<dim>::state_changed() const
+  {
+    bool changed = false;
+    for (const Probe &probe : probes)
+      changed = changed || probe.changed;
+    return Utilities::MPI::max(changed ? 1 : 0,
+                               grid.get_triangulation().get_communicator()) ==
+           1;
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::add_matrix(const LoadStepSystem<dim>      &system,
+                                TrilinosWrappers::SparseMatrix &matrix) const
+  {
+    for (const Probe &probe : probes)
+      {
+        if (!probe.active)
+          continue;
+        const PointStep<dim> &step = system.point_steps[probe.point];
+        const unsigned int    n    = step.support.n_nodes * dim;
+        for (unsigned int r = 0; r < n; ++r)
+          {
+            const auto row = system.system_index(step.dofs[r]);
+            if (row == numbers::invalid_dof_index ||
+                probe.weights[r / dim] == 0.)
+              continue;
+            for (unsigned int s = 0; s < n; ++s)
+              {
+                const auto   column = system.system_index(step.dofs[s]);
+                const double value  = -probe.weights[r / dim] *
+                                     probe.weights[s / dim] *
+                                     probe.force_derivative[r % dim][s % dim];
+                if (column != numbers::invalid_dof_index && value != 0.)
+                  matrix.add(row, column, value);
+              }
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::accept(MaterialPoints<dim> &material_points)
+  {
+    for (auto &force : forces_on_bodies)
+      force = BodyForce();
+    std::vector<double> tractions;
+    if (friction)
+      tractions.assign(material_points.n_local_points() * traction_entries, 0.);
+    for (const Probe &probe : probes)
+      {
+        if (!probe.active)
+          continue;
+        BodyForce &force = forces_on_bodies[probe.body];
+        force.normal -= probe.normal_force;
+        force.tangential -= probe.friction_force;
+        ++force.n_contacts;
+        force.n_slipping += probe.slipping ? 1 : 0;
+        if (friction)
+          for (unsigned int d = 0; d < dim; ++d)
+            tractions[probe.point * traction_entries + probe.face * dim + d] =
+              probe.traction[d];
+      }
+    const MPI_Comm communicator = grid.get_triangulation().get_communicator();
+    for (BodyForce &force : forces_on_bodies)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            force.normal[d] =
+              Utilities::MPI::sum(force.normal[d], communicator);
+            force.tangential[d] =
+              Utilities::MPI::sum(force.tangential[d], communicator);
+          }
+        force.n_contacts = Utilities::MPI::sum(force.n_contacts, communicator);
+        force.n_slipping = Utilities::MPI::sum(force.n_slipping, communicator);
+        force.total      = force.normal + force.tangential;
+      }
+    if (friction)
+      material_points.set_contact_tractions(tractions);
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  RigidContact<dim>::descriptions() const
+  {
+    std::vector<std::string> lines;
+    for (const auto &body : rigid_bodies)
+      lines.push_back(body.description());
+    return lines;
+  }
+
+
+
+  template class RigidContact<2>;
+  template class RigidContact<3>;
+} // namespace impm

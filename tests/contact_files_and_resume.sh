@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Rigid bodies in the output and in checkpoints (issue 13), on the block of
+# contact_block_sticking.prm (a Coulomb floor and a plate, 3 steps; the
+# faces on the floor store their friction tractions in their points, and
+# most of them stick, so the next step starts from those tractions):
+#  1. the uninterrupted run with point files every step: the .pvd names,
+#     for each output step, the points (part 0) and each rigid body's
+#     surface (parts 1 and 2), every file is readable by VTK's XML readers,
+#     and the plate's surface at full load lies 1.5 mm right of its start
+#     (x from 0.0015 to 0.5015 m);
+#  2. stopped after step 1 with a checkpoint there and resumed (on MPIEXEC
+#     N processes if given): the same final summary (forces on both bodies,
+#     extents) and steps.csv as the uninterrupted run, so the friction
+#     tractions came through the checkpoint.
+# Usage: contact_files_and_resume.sh IMPM SCENE [MPIEXEC N]
+# (SCENE: tests/contact_block_sticking.prm)
+scene=$2
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+source "$here/script_helpers.sh" "$@"
+settings=(--set "Output/Interval=1")
+compare() {
+  numdiff -q -a 1e-6 -r 1e-8 -s ' \t\n=,:;<>[](){}^' "$1" "$2" > /dev/null ||
+    { diff "$1" "$2" | head -20; fail "$3"; }
+}
+summary() { grep -v "^step \|^Stopped\|checkpoint" "$1"; }
+untimed() {
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) keep[i] = ($i !~ /seconds|^time_/) }
+           { line = ""; for (i = 1; i <= NF; ++i) if (keep[i]) line = line $i ",";
+             print line }' "$1"
+}
+
+# 1. The uninterrupted run and its files.
+"$impm" "$scene" "${settings[@]}" > full.txt 2>&1 || fail "the uninterrupted run failed"
+summary full.txt > full_summary.txt
+untimed results/steps.csv > full_steps.csv
+/usr/bin/python3 "$here/check_point_files.py" results > check.txt || { cat check.txt; fail "a point or body file is incomplete"; }
+n_points=$(grep -c 'part="0" file="points_' results/points.pvd)
+[ "$(grep -c 'part="1" file="rigid_1_' results/points.pvd)" -eq "$n_points" ] || fail "the floor is not in every output step"
+[ "$(grep -c 'part="2" file="rigid_2_' results/points.pvd)" -eq "$n_points" ] || fail "the plate is not in every output step"
+/usr/bin/python3 - results/rigid_2_00003.vtu <<'PYTHON' || fail "the plate's surface is not where it was moved"
+import sys, vtk
+reader = vtk.vtkXMLUnstructuredGridReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+bounds = reader.GetOutput().GetBounds()
+assert abs(bounds[0] - 0.0015) < 1e-12 and abs(bounds[1] - 0.5015) < 1e-12, bounds
+PYTHON
+
+# 2. Stopped after step 10 and resumed.
+rm -rf results
+"$impm" "$scene" "${settings[@]}" --set "Checkpoint/Interval=1" \
+  --stop-after-step 1 > part1.txt 2>&1 || fail "the first part failed"
+"${launcher[@]}" "$impm" "$scene" "${settings[@]}" --set "Checkpoint/Interval=1" \
+  --resume > part2.txt 2>&1 || fail "the resumed run failed"
+grep -q "^step   2 " part2.txt || fail "the resumed run did not start at step 2"
+summary part2.txt > resumed_summary.txt
+compare full_summary.txt resumed_summary.txt "the resumed run ends in another state"
+untimed results/steps.csv > resumed_steps.csv
+compare full_steps.csv resumed_steps.csv "steps.csv of the resumed run differs"
+echo "contact_files_and_resume: passed"
