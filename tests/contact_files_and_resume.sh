@@ -18,16 +18,6 @@ scene=$2
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/script_helpers.sh" "$@"
 settings=(--set "Output/Interval=1")
-compare() {
-  numdiff -q -a 1e-6 -r 1e-8 -s ' \t\n=,:;<>[](){}^' "$1" "$2" > /dev/null ||
-    { diff "$1" "$2" | head -20; fail "$3"; }
-}
-summary() { grep -v "^step \|^Stopped\|checkpoint" "$1"; }
-untimed() {
-  awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) keep[i] = ($i !~ /seconds|^time_/) }
-           { line = ""; for (i = 1; i <= NF; ++i) if (keep[i]) line = line $i ",";
-             print line }' "$1"
-}
 
 # 1. The uninterrupted run and its files.
 "$impm" "$scene" "${settings[@]}" > full.txt 2>&1 || fail "the uninterrupted run failed"

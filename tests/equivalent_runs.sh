@@ -27,10 +27,6 @@
 # Usage: equivalent_runs.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
 tests=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
-compare() {
-  numdiff -q -a 1e-6 -r 1e-8 -s ' \t\n=,:;<>[](){}^' "$1" "$2" > /dev/null ||
-    { diff "$1" "$2"; fail "$3"; }
-}
 run() { "${launcher[@]}" "$impm" "$tests/$1.prm" --overwrite > "$1.txt" 2> /dev/null || fail "$1 did not run"; }
 
 run column_updated_lagrangian

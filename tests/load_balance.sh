@@ -7,10 +7,6 @@
 # Usage: load_balance.sh IMPM SCENE MPIEXEC 2
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
-compare() {
-  numdiff -q -a 1e-6 -r 1e-8 -s ' \t\n=,:;<>[](){}^' "$1" "$2" > /dev/null ||
-    { diff "$1" "$2"; fail "$3"; }
-}
 
 "${launcher[@]}" "$impm" "$scene" --set "Testing/Enabled=false" \
   --set "Output/Interval=1" > log.txt 2>&1 || fail "the run failed"

@@ -17,18 +17,6 @@ scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 settings=(--set "Solver/Load steps=40" --set "Output/Interval=4")
-compare() {
-  numdiff -q -a 1e-6 -r 1e-8 -s ' \t\n=,:;<>[](){}^' "$1" "$2" > /dev/null ||
-    { diff "$1" "$2" | head -20; fail "$3"; }
-}
-# The summary lines (not the per-step lines) of a test-mode printout.
-summary() { grep -v "^step \|^Stopped\|checkpoint" "$1"; }
-# A csv file without its time columns (wall times differ between runs).
-untimed() {
-  awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) keep[i] = ($i !~ /seconds|^time_/) }
-           { line = ""; for (i = 1; i <= NF; ++i) if (keep[i]) line = line $i ",";
-             print line }' "$1"
-}
 
 # 1. The reference.
 "$impm" "$scene" "${settings[@]}" > full.txt 2>&1 || fail "the uninterrupted run failed"

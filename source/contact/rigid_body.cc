@@ -94,23 +94,6 @@ namespace impm
 
 
 
-  namespace
-  {
-    /** The outer product a b^T. */
-    template <int dim>
-    Tensor<2, dim>
-    outer(const Tensor<1, dim> &a, const Tensor<1, dim> &b)
-    {
-      Tensor<2, dim> product;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          product[i][j] = a[i] * b[j];
-      return product;
-    }
-  } // namespace
-
-
-
   template <int dim>
   typename RigidBody<dim>::Proximity
   RigidBody<dim>::proximity(const Point<dim>     &x,
@@ -210,7 +193,7 @@ namespace impm
         result.gap    = offset.norm();
         result.normal = offset / result.gap;
         result.normal_derivative =
-          (clamped - outer(result.normal, result.normal)) / result.gap;
+          (clamped - outer_product(result.normal, result.normal)) / result.gap;
         return result;
       }
     if (outline.shape == Shape::disc || outline.shape == Shape::sphere)
@@ -226,7 +209,7 @@ namespace impm
         result.normal = offset / r;
         result.normal_derivative =
           (Tensor<2, dim>(unit_symmetric_tensor<dim>()) -
-           outer(result.normal, result.normal)) /
+           outer_product(result.normal, result.normal)) /
           r;
         return result;
       }
@@ -298,7 +281,7 @@ namespace impm
     // At a vertex the normal turns with the point.
     result.normal            = (inside ? nearest - y : y - nearest) / distance;
     result.normal_derivative = (Tensor<2, dim>(unit_symmetric_tensor<dim>()) -
-                                outer(result.normal, result.normal)) /
+                                outer_product(result.normal, result.normal)) /
                                result.gap;
     return result;
   }

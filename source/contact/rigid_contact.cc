@@ -10,23 +10,6 @@
 
 namespace impm
 {
-  namespace
-  {
-    /** The outer product a b^T. */
-    template <int dim>
-    Tensor<2, dim>
-    outer(const Tensor<1, dim> &a, const Tensor<1, dim> &b)
-    {
-      Tensor<2, dim> product;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          product[i][j] = a[i] * b[j];
-      return product;
-    }
-  } // namespace
-
-
-
   template <int dim>
   RigidContact<dim>::RigidContact(
     const std::vector<RigidBody<dim>> &rigid_bodies,
@@ -143,13 +126,12 @@ namespace impm
                 if (!near)
                   continue;
                 Probe probe;
-                probe.point             = p;
-                probe.body              = b;
-                probe.face              = face;
-                probe.start_position    = centre;
-                probe.face_normal       = Tensor<1, dim>();
-                probe.face_normal[axis] = sign;
-                probe.facing.normal     = probe.face_normal;
+                probe.point               = p;
+                probe.body                = b;
+                probe.face                = face;
+                probe.start_position      = centre;
+                probe.facing.normal       = Tensor<1, dim>();
+                probe.facing.normal[axis] = sign;
                 probe.facing.start =
                   centre - rigid_bodies[b].displacement_at(start);
                 // The penalty lets a face in by p h / (alpha E), less than
@@ -194,7 +176,7 @@ namespace impm
     const Tensor<2, dim> &H = proximity.normal_derivative;
     // The face's share of the body's surface: its area projected on the
     // tangent plane.
-    const double c = -(probe.face_normal * n);
+    const double c = -(probe.facing.normal * n);
     probe.active   = proximity.gap <= 0. && c > 0.;
     probe.slipping = false;
     if (!probe.active)
@@ -210,15 +192,16 @@ namespace impm
     const double          pressure = -k * proximity.gap;
     const double          w        = proximity.overlap;
     const Tensor<1, dim> &dw       = proximity.overlap_gradient;
-    const Tensor<1, dim>  dc       = -(H * probe.face_normal);
+    const Tensor<1, dim>  dc       = -(H * probe.facing.normal);
     const Tensor<2, dim>  identity = unit_symmetric_tensor<dim>();
     // The pressure on the part w of the face's area projected on the
     // tangent plane, A c w.
     probe.normal_force = A * c * w * pressure * n;
     // d(A c w p n)/dx, with dp/dx = -k n and dn/dx = H.
     probe.force_derivative =
-      A * (outer(n, w * (-k * c * n + pressure * dc) + c * pressure * dw) +
-           c * w * pressure * H);
+      A *
+      (outer_product(n, w * (-k * c * n + pressure * dc) + c * pressure * dw) +
+       c * w * pressure * H);
 
     probe.traction       = Tensor<1, dim>();
     probe.friction_force = Tensor<1, dim>();
@@ -230,10 +213,10 @@ namespace impm
       (position - probe.start_position) - displacement_increment[probe.body];
     const double         kt         = probe.tangential_stiffness;
     const Tensor<1, dim> v          = probe.previous_traction + kt * slip;
-    const Tensor<2, dim> projection = identity - outer(n, n);
+    const Tensor<2, dim> projection = identity - outer_product(n, n);
     const Tensor<1, dim> trial      = projection * v;
     const Tensor<2, dim> d_trial =
-      kt * projection - (n * v) * H - outer(n, H * v);
+      kt * projection - (n * v) * H - outer_product(n, H * v);
     const double   trial_norm = trial.norm();
     const double   limit      = body.friction_coefficient * pressure;
     Tensor<2, dim> d_traction;
@@ -248,12 +231,12 @@ namespace impm
         const Tensor<1, dim> m = trial / trial_norm;
         probe.traction         = limit * m;
         d_traction =
-          outer(m, -body.friction_coefficient * k * n) +
-          (limit / trial_norm) * ((identity - outer(m, m)) * d_trial);
+          outer_product(m, -body.friction_coefficient * k * n) +
+          (limit / trial_norm) * ((identity - outer_product(m, m)) * d_trial);
       }
     probe.friction_force = -A * c * w * probe.traction;
     probe.force_derivative -=
-      A * (outer(probe.traction, w * dc + c * dw) + c * w * d_traction);
+      A * (outer_product(probe.traction, w * dc + c * dw) + c * w * d_traction);
   }
 
 

@@ -170,9 +170,8 @@ namespace impm
       unsigned int face;
       /** The face's centre at the start of the step. */
       Point<dim> start_position;
-      /** The face's outward normal. */
-      Tensor<1, dim> face_normal;
-      /** The face as the body's proximity() needs it. */
+      /** The face as the body's proximity() needs it: its outward normal,
+       *  start and half-lengths. */
       typename RigidBody<dim>::Facing facing;
       /** The face's area (length in 2D). */
       double area;
