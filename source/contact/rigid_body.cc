@@ -127,19 +127,26 @@ namespace impm
                     continue;
                   double         overlap = 1.;
                   Tensor<1, dim> factors, slopes;
+                  // The side, then two bits per direction: which ends of
+                  // the face lie inside the side's extent.
+                  unsigned int piece = 2 * d + (sign > 0. ? 1 : 0);
                   for (unsigned int j = 0; j < dim; ++j)
                     {
                       factors[j] = 1.;
                       if (j == d)
                         continue;
-                      const double l    = facing->half_length[j];
-                      const double high = std::min(y[j] + l, b[j]);
-                      const double low  = std::max(y[j] - l, a[j]);
-                      factors[j]        = std::max(high - low, 0.) / (2. * l);
+                      const double l           = facing->half_length[j];
+                      const bool   high_inside = y[j] + l < b[j];
+                      const bool   low_inside  = y[j] - l > a[j];
+                      const double high        = std::min(y[j] + l, b[j]);
+                      const double low         = std::max(y[j] - l, a[j]);
+                      factors[j] = std::max(high - low, 0.) / (2. * l);
                       if (factors[j] > 0.)
-                        slopes[j] = ((y[j] + l < b[j] ? 1. : 0.) -
-                                     (y[j] - l > a[j] ? 1. : 0.)) /
-                                    (2. * l);
+                        slopes[j] =
+                          ((high_inside ? 1. : 0.) - (low_inside ? 1. : 0.)) /
+                          (2. * l);
+                      piece += (1u << (3 + 2 * j)) * (high_inside ? 1 : 0) +
+                               (1u << (4 + 2 * j)) * (low_inside ? 1 : 0);
                       overlap *= factors[j];
                     }
                   if (!(overlap > 0.))
@@ -149,6 +156,7 @@ namespace impm
                   result.normal    = Tensor<1, dim>();
                   result.normal[d] = sign;
                   result.overlap   = overlap;
+                  result.piece     = piece;
                   for (unsigned int j = 0; j < dim; ++j)
                     {
                       double product = slopes[j];
@@ -266,6 +274,7 @@ namespace impm
               {
                 depth         = to_edge;
                 result.normal = normal;
+                result.piece  = i;
               }
           }
         if (depth < std::numeric_limits<double>::max())

@@ -179,6 +179,7 @@ namespace impm
     const double c = -(probe.facing.normal * n);
     probe.active   = proximity.gap <= 0. && c > 0.;
     probe.slipping = false;
+    probe.piece    = probe.active ? proximity.piece : 0;
     if (!probe.active)
       {
         probe.normal_force     = Tensor<1, dim>();
@@ -256,9 +257,11 @@ namespace impm
             position[i] += probe.weights[v] *
                            increment.local_element(step.dofs[v * dim + i]);
         const bool was_active = probe.active, was_slipping = probe.slipping;
+        const unsigned int was_piece = probe.piece;
         evaluate(probe, position);
-        probe.changed =
-          probe.active != was_active || probe.slipping != was_slipping;
+        probe.changed = probe.active != was_active ||
+                        probe.slipping != was_slipping ||
+                        probe.piece != was_piece;
         if (!probe.active)
           continue;
         const Tensor<1, dim> force = probe.normal_force + probe.friction_force;

@@ -338,6 +338,8 @@ namespace impm
     problem.begin(record.start, record.target);
     record.newton             = newton_solver.solve(problem);
     record.tangent_difference = problem.take_tangent_difference();
+    record.tangent_columns_across_kinks =
+      problem.take_tangent_columns_across_kinks();
     if (record.converged())
       record.point_increment = problem.max_point_increment();
     record.newton.outcome =

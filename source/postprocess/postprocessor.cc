@@ -43,6 +43,7 @@ namespace impm
       worst_condition = std::max(worst_condition, solve.condition_estimate);
     max_tangent_difference =
       std::max(max_tangent_difference, record.tangent_difference);
+    tangent_columns_across_kinks += record.tangent_columns_across_kinks;
     if (!record.converged())
       {
         ++n_cuts;

@@ -171,16 +171,23 @@ namespace impm
                 << '\n';
       const auto &testing = parameters.testing;
       if (testing.check_tangent)
-        std::cout << "every assembled matrix agrees with central differences "
-                     "of the internal force to 1e-6: "
-                  << (statistics.max_tangent_difference < 0. ?
-                        "not checked" :
-                      statistics.max_tangent_difference <= 1e-6 ?
-                        "yes" :
-                        "NO (" +
-                          std::to_string(statistics.max_tangent_difference) +
-                          ")")
-                  << '\n';
+        std::cout
+          << "every assembled matrix agrees with central differences "
+             "of the internal force to 1e-6: "
+          << (statistics.max_tangent_difference < 0. ?
+                "not checked" :
+              statistics.max_tangent_difference <= 1e-6 ?
+                "yes" :
+                "NO (" + std::to_string(statistics.max_tangent_difference) +
+                  ")")
+          << (statistics.tangent_columns_across_kinks > 0 ?
+                " (" + std::to_string(statistics.tangent_columns_across_kinks) +
+                  (statistics.tangent_columns_across_kinks == 1 ? " column" :
+                                                                  " columns") +
+                  " whose perturbation changed a contact's state not "
+                  "compared)" :
+                std::string())
+          << '\n';
       std::cout << "scales: L = " << testing.reference_length
                 << " m, S = " << testing.reference_stress
                 << " Pa; extents and displacements in L, stresses in S, "

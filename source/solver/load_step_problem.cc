@@ -159,9 +159,22 @@ namespace impm
         };
         perturb(perturbation);
         internal_force_at(plus);
+        // A contact whose state differs between the iterate and a
+        // perturbed one (a face within the perturbation of the surface or
+        // of a box's edge) has a kink there: its differences are no
+        // derivative.
+        bool across_kink =
+          rigid_contact != nullptr && rigid_contact->state_changed();
         perturb(-2. * perturbation);
         internal_force_at(minus);
+        across_kink = across_kink || (rigid_contact != nullptr &&
+                                      rigid_contact->state_changed());
         perturb(perturbation);
+        if (across_kink)
+          {
+            ++tangent_columns_across_kinks;
+            continue;
+          }
         for (unsigned int r = 0; r < rows.size(); ++r)
           {
             const double entry = system.matrix.el(rows[r].first, column);

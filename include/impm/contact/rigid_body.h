@@ -84,6 +84,12 @@ namespace impm
       double overlap = 1.;
       /** Its derivative with respect to the point. */
       Tensor<1, dim> overlap_gradient;
+      /** Which piece of the piecewise smooth contact the point is on: the
+       *  side pushing it and, on a box, which of the face's ends lie beyond
+       *  the side's edges (where the overlap's slope changes). A change
+       *  between two evaluations is a change of contact state, like
+       *  entering or leaving contact. */
+      unsigned int piece = 0;
     };
 
     /**

@@ -188,7 +188,11 @@ namespace impm
        *  and the derivative of the force with respect to the face's
        *  position. */
       bool active = false, slipping = false;
-      /** Whether the last evaluation changed active or slipping. */
+      /** Of the last evaluation: the piece of the body's contact
+       *  (RigidBody::Proximity::piece). */
+      unsigned int piece = 0;
+      /** Whether the last evaluation changed active, slipping or the
+       *  piece. */
       bool           changed = false;
       Tensor<1, dim> normal_force, friction_force, traction;
       Tensor<2, dim> force_derivative;

@@ -93,6 +93,9 @@ namespace impm
      *  an assembled matrix of the attempt and its central differences
      *  (negative: not checked). */
     double tangent_difference = -1.;
+    /** Testing/Check tangent only: the columns left out because their
+     *  perturbation changed a contact's state. */
+    unsigned int tangent_columns_across_kinks = 0;
 
     /** @brief Whether the attempt converged and was accepted. */
     bool
@@ -133,6 +136,8 @@ namespace impm
     /** The largest StepRecord::tangent_difference (negative: not
      *  checked). */
     double max_tangent_difference = -1.;
+    /** The sum of StepRecord::tangent_columns_across_kinks. */
+    unsigned int tangent_columns_across_kinks = 0;
     /** Reactions and measures of the last converged step. */
     std::vector<double>      last_reactions;
     std::vector<StepMeasure> last_measures;

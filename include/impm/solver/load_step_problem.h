@@ -96,6 +96,19 @@ namespace impm
       return difference;
     }
 
+    /**
+     * @brief The number of matrix columns the tangent checks since the
+     * last call left out because the perturbation changed a contact's
+     * state (a kink of the contact force lies within it), and start again.
+     */
+    unsigned int
+    take_tangent_columns_across_kinks()
+    {
+      const unsigned int n         = tangent_columns_across_kinks;
+      tangent_columns_across_kinks = 0;
+      return n;
+    }
+
     /** @brief The displacement increment of the current iterate. */
     const NodalVector &
     increment() const
@@ -135,7 +148,9 @@ namespace impm
      * The largest difference, over the matrix's entries, between the
      * assembled matrix and central differences of the internal force,
      * relative to the largest entry. Perturbs each system DoF in turn (on
-     * its owner; all processes take part) and restores the iterate.
+     * its owner; all processes take part) and restores the iterate. A
+     * column whose perturbation changes a rigid contact's state is left
+     * out and counted (tangent_columns_across_kinks).
      * Collective.
      */
     double
@@ -145,6 +160,9 @@ namespace impm
     bool checks_tangent = false;
     /** The largest difference of the checks (negative: none). */
     double tangent_difference = -1.;
+    /** Columns the checks left out: their perturbation changed a
+     *  contact's state. */
+    unsigned int tangent_columns_across_kinks = 0;
   };
 } // namespace impm
 
