@@ -7,6 +7,75 @@
 
 namespace impm
 {
+  namespace
+  {
+    /** Where a point of the plane is relative to a polygon. */
+    struct PlanarProximity
+    {
+      /** Signed distance from the outline, negative inside. */
+      double gap;
+      /** Outward unit normal at the nearest outline point. */
+      Tensor<1, 2> normal;
+      /** Its derivative with respect to the point (zero on an edge). */
+      Tensor<2, 2> normal_derivative;
+    };
+
+    /** The proximity of @p x to the polygon with @p vertices (in order,
+     *  either orientation). */
+    PlanarProximity
+    polygon_proximity(const std::vector<Point<2>> &vertices, const Point<2> &x)
+    {
+      const auto n          = vertices.size();
+      double     twice_area = 0.;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const Point<2> &p = vertices[i], &q = vertices[(i + 1) % n];
+          twice_area += p[0] * q[1] - q[0] * p[1];
+        }
+      const double orientation = twice_area > 0. ? 1. : -1.;
+      double       distance    = std::numeric_limits<double>::max();
+      bool         at_vertex = false, inside = false;
+      Point<2>     nearest;
+      Tensor<1, 2> edge_normal;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const Point<2>    &p = vertices[i], &q = vertices[(i + 1) % n];
+          const Tensor<1, 2> edge = q - p;
+          const double       s =
+            std::clamp(((x - p) * edge) / edge.norm_square(), 0., 1.);
+          const Point<2> on_edge = p + s * edge;
+          const double   d       = x.distance(on_edge);
+          if (d < distance)
+            {
+              distance       = d;
+              nearest        = on_edge;
+              at_vertex      = s == 0. || s == 1.;
+              edge_normal[0] = orientation * edge[1] / edge.norm();
+              edge_normal[1] = -orientation * edge[0] / edge.norm();
+            }
+          // Even-odd rule, as Body::contains().
+          if ((p[1] > x[1]) != (q[1] > x[1]) &&
+              x[0] < (q[0] - p[0]) * (x[1] - p[1]) / (q[1] - p[1]) + p[0])
+            inside = !inside;
+        }
+      PlanarProximity result;
+      result.gap = inside ? -distance : distance;
+      if (!at_vertex || distance == 0.)
+        {
+          result.normal = edge_normal;
+          return result;
+        }
+      // At a vertex the normal turns with the point.
+      result.normal = (inside ? nearest - x : x - nearest) / distance;
+      result.normal_derivative = (Tensor<2, 2>(unit_symmetric_tensor<2>()) -
+                                  outer_product(result.normal, result.normal)) /
+                                 result.gap;
+      return result;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   RigidBody<dim>::declare_parameters(ParameterHandler &prm)
@@ -14,7 +83,31 @@ namespace impm
     for (unsigned int k = 1; k <= max_rigid_bodies; ++k)
       {
         prm.enter_subsection("Rigid body " + std::to_string(k));
-        Body<dim>::declare_shape_parameters(prm);
+        Body<dim>::declare_shape_parameters(prm, "|cone");
+        prm.declare_entry("Tip",
+                          "0, 0, 0",
+                          Patterns::List(Patterns::Double(), 3, 3),
+                          "Cone (3D): the tip, in m.");
+        prm.declare_entry("Axis",
+                          "0, 0, 1",
+                          Patterns::List(Patterns::Double(), 3, 3),
+                          "Cone: the direction from the tip toward the base "
+                          "(any length > 0).");
+        prm.declare_entry("Cone height",
+                          "1",
+                          Patterns::Double(0.),
+                          "Cone: the height from the tip to the base, in m "
+                          "(> 0).");
+        prm.declare_entry("Cone radius",
+                          "0.5",
+                          Patterns::Double(0.),
+                          "Cone: the radius of the base and the shaft, in m "
+                          "(> 0).");
+        prm.declare_entry("Shaft length",
+                          "0",
+                          Patterns::Double(0.),
+                          "Cone: the length of the cylindrical shaft above "
+                          "the base, in m (>= 0; 0: a cone alone).");
         prm.declare_entry("Displacement",
                           "0, 0",
                           Patterns::List(Patterns::Double(), 2, 3),
@@ -44,6 +137,17 @@ namespace impm
           "100 keeps the error of the plate benchmark under 1 % "
           "(doc/benchmarks).");
         prm.declare_entry(
+          "Face quadrature points",
+          "3",
+          Patterns::Integer(1, 4),
+          "A disc, sphere, cone or polygon touches each face of a point's "
+          "domain at this many Gauss points per direction along the face "
+          "(1 to 4; 1: the face's centre alone, which a sharp tip or a "
+          "small disc can pass between). The default 3 took the pipe "
+          "scene through without a cut and fastest (doc/benchmarks). A box "
+          "uses the face's centre and the exact part of the face over its "
+          "side instead.");
+        prm.declare_entry(
           "Tangential penalty factor",
           "10",
           Patterns::Double(0.),
@@ -67,7 +171,15 @@ namespace impm
     name = "Rigid body " + std::to_string(number);
     prm.enter_subsection(name);
     outline.name = name;
-    outline.parse_shape(prm);
+    is_cone      = prm.get("Shape") == "cone";
+    if (!is_cone)
+      outline.parse_shape(prm);
+    else if (dim != 3)
+      Parameters::bad_value(name + "/Shape",
+                            "cone",
+                            "a cone is 3D (in 2D, a polygon).");
+    else
+      parse_cone(prm);
     const auto values = Parameters::get_vector(prm, name, "Displacement", dim);
     for (unsigned int d = 0; d < dim; ++d)
       displacement[d] = values[d];
@@ -84,12 +196,50 @@ namespace impm
       Parameters::bad_value(name + "/Penalty factor",
                             prm.get("Penalty factor"),
                             "it must be > 0.");
+    face_quadrature_points    = prm.get_integer("Face quadrature points");
     tangential_penalty_factor = prm.get_double("Tangential penalty factor");
     if (friction != Friction::frictionless && !(tangential_penalty_factor > 0.))
       Parameters::bad_value(name + "/Tangential penalty factor",
                             prm.get("Tangential penalty factor"),
                             "it must be > 0 with friction.");
     prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  RigidBody<dim>::parse_cone(ParameterHandler &prm)
+  {
+    const auto tip  = Parameters::get_vector(prm, name, "Tip", dim);
+    const auto axis = Parameters::get_vector(prm, name, "Axis", dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        cone.tip[d]  = tip[d];
+        cone.axis[d] = axis[d];
+      }
+    if (!(cone.axis.norm() > 0.))
+      Parameters::bad_value(name + "/Axis",
+                            prm.get("Axis"),
+                            "the direction needs a length > 0.");
+    cone.axis /= cone.axis.norm();
+    cone.height       = prm.get_double("Cone height");
+    cone.radius       = prm.get_double("Cone radius");
+    cone.shaft_length = prm.get_double("Shaft length");
+    if (!(cone.height > 0.))
+      Parameters::bad_value(name + "/Cone height",
+                            prm.get("Cone height"),
+                            "it must be > 0.");
+    if (!(cone.radius > 0.))
+      Parameters::bad_value(name + "/Cone radius",
+                            prm.get("Cone radius"),
+                            "it must be > 0.");
+    const double r = cone.radius, h = cone.height, top = h + cone.shaft_length;
+    cone.profile = {Point<2>(0., 0.), Point<2>(r, h)};
+    if (cone.shaft_length > 0.)
+      cone.profile.insert(cone.profile.end(),
+                          {Point<2>(r, top), Point<2>(-r, top)});
+    cone.profile.push_back(Point<2>(-r, h));
   }
 
 
@@ -103,6 +253,42 @@ namespace impm
     const Point<dim> y = x - body_displacement;
     Proximity        result;
     using Shape = typename Body<dim>::Shape;
+    if (is_cone)
+      {
+        // The profile's proximity in the plane through the axis and y,
+        // turned about the axis: n = n_r e_r + n_z a, and its derivative
+        // adds the turning of e_r, (I - a a - e_r e_r) / r.
+        const Tensor<1, dim> &a      = cone.axis;
+        const Tensor<1, dim>  offset = y - cone.tip;
+        const double          z      = offset * a;
+        const Tensor<1, dim>  radial = offset - z * a;
+        const double          r      = radial.norm();
+        Tensor<1, dim>        e_r;
+        if (r > 0.)
+          e_r = radial / r;
+        else
+          {
+            // On the axis: any direction across it.
+            e_r[a[0] * a[0] < 0.5 ? 0 : 1] = 1.;
+            e_r -= (e_r * a) * a;
+            e_r /= e_r.norm();
+          }
+        const PlanarProximity planar =
+          polygon_proximity(cone.profile, Point<2>(r, z));
+        const Tensor<2, 2> &h = planar.normal_derivative;
+        result.gap            = planar.gap;
+        result.normal         = planar.normal[0] * e_r + planar.normal[1] * a;
+        result.normal_derivative =
+          outer_product(e_r, h[0][0] * e_r + h[0][1] * a) +
+          outer_product(a, h[1][0] * e_r + h[1][1] * a);
+        if (r > 0.)
+          result.normal_derivative +=
+            planar.normal[0] *
+            (Tensor<2, dim>(unit_symmetric_tensor<dim>()) -
+             outer_product(a, a) - outer_product(e_r, e_r)) /
+            r;
+        return result;
+      }
     if (outline.shape == Shape::box)
       {
         const Point<dim> &a = outline.lower_corner, &b = outline.upper_corner;
@@ -222,43 +408,21 @@ namespace impm
         return result;
       }
 
-    // Polygon (2D): the nearest point over the edges.
-    const auto &vertices   = outline.vertices;
-    const auto  n          = vertices.size();
-    double      twice_area = 0.;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const Point<dim> &p = vertices[i], &q = vertices[(i + 1) % n];
-        twice_area += p[0] * q[1] - q[0] * p[1];
-      }
-    const double   orientation = twice_area > 0. ? 1. : -1.;
-    double         distance    = std::numeric_limits<double>::max();
-    bool           at_vertex   = false;
-    Point<dim>     nearest;
-    Tensor<1, dim> edge_normal;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const Point<dim>    &p = vertices[i], &q = vertices[(i + 1) % n];
-        const Tensor<1, dim> edge = q - p;
-        const double         s =
-          std::clamp(((y - p) * edge) / edge.norm_square(), 0., 1.);
-        const Point<dim> on_edge = p + s * edge;
-        const double     d       = y.distance(on_edge);
-        if (d < distance)
-          {
-            distance       = d;
-            nearest        = on_edge;
-            at_vertex      = s == 0. || s == 1.;
-            edge_normal[0] = orientation * edge[1] / edge.norm();
-            edge_normal[1] = -orientation * edge[0] / edge.norm();
-          }
-      }
-    const bool inside = outline.contains(y);
-    if (inside && facing != nullptr)
+    // Polygon (2D).
+    const auto &vertices = outline.vertices;
+    const auto  n        = vertices.size();
+    if (facing != nullptr && outline.contains(y))
       {
         // The depth below the nearest edge line of those facing: a flat
         // surface (exact for a convex polygon).
-        double depth = std::numeric_limits<double>::max();
+        double twice_area = 0.;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const Point<dim> &p = vertices[i], &q = vertices[(i + 1) % n];
+            twice_area += p[0] * q[1] - q[0] * p[1];
+          }
+        const double orientation = twice_area > 0. ? 1. : -1.;
+        double       depth       = std::numeric_limits<double>::max();
         for (unsigned int i = 0; i < n; ++i)
           {
             const Point<dim>    &p = vertices[i], &q = vertices[(i + 1) % n];
@@ -281,17 +445,13 @@ namespace impm
           result.gap = -depth;
         return result;
       }
-    result.gap = inside ? -distance : distance;
-    if (!at_vertex || distance == 0.)
+    if constexpr (dim == 2)
       {
-        result.normal = edge_normal;
-        return result;
+        const PlanarProximity planar = polygon_proximity(vertices, y);
+        result.gap                   = planar.gap;
+        result.normal                = planar.normal;
+        result.normal_derivative     = planar.normal_derivative;
       }
-    // At a vertex the normal turns with the point.
-    result.normal            = (inside ? nearest - y : y - nearest) / distance;
-    result.normal_derivative = (Tensor<2, dim>(unit_symmetric_tensor<dim>()) -
-                                outer_product(result.normal, result.normal)) /
-                               result.gap;
     return result;
   }
 
@@ -302,6 +462,23 @@ namespace impm
   RigidBody<dim>::bounding_box(const Tensor<1, dim> &body_displacement) const
   {
     auto box = outline.bounding_box();
+    if (is_cone)
+      {
+        // The tip and the circles of the base and the shaft's top: a
+        // circle of radius R across the axis a reaches R sqrt(1 - a_d^2)
+        // along axis d.
+        box.first = box.second = cone.tip;
+        for (const double z : {cone.height, cone.height + cone.shaft_length})
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double centre = cone.tip[d] + z * cone.axis[d];
+              const double reach =
+                cone.radius *
+                std::sqrt(std::max(1. - cone.axis[d] * cone.axis[d], 0.));
+              box.first[d]  = std::min(box.first[d], centre - reach);
+              box.second[d] = std::max(box.second[d], centre + reach);
+            }
+      }
     box.first += body_displacement;
     box.second += body_displacement;
     return box;
@@ -316,7 +493,46 @@ namespace impm
     Surface result;
     using Shape   = typename Body<dim>::Shape;
     auto &corners = result.vertices;
-    if (outline.shape == Shape::box)
+    if (is_cone)
+      {
+        // The profile's corners off the axis turned about it in 32 steps:
+        // the tip, one ring per corner, the centre of the top.
+        const unsigned int n_around = 32;
+        Tensor<1, dim>     across;
+        across[cone.axis[0] * cone.axis[0] < 0.5 ? 0 : 1] = 1.;
+        across -= (across * cone.axis) * cone.axis;
+        across /= across.norm();
+        const Tensor<1, dim> other = cross_product_3d(cone.axis, across);
+        const double         top   = cone.height + cone.shaft_length;
+        corners.push_back(cone.tip);
+        std::vector<double> ring_heights = {cone.height};
+        if (cone.shaft_length > 0.)
+          ring_heights.push_back(top);
+        for (const double z : ring_heights)
+          for (unsigned int j = 0; j < n_around; ++j)
+            {
+              const double angle = 2. * numbers::PI * j / n_around;
+              corners.push_back(cone.tip + z * cone.axis +
+                                cone.radius * (std::cos(angle) * across +
+                                               std::sin(angle) * other));
+            }
+        corners.push_back(cone.tip + top * cone.axis);
+        const unsigned int top_centre = corners.size() - 1;
+        const auto ring = [&](const unsigned int k, const unsigned int j) {
+          return 1 + k * n_around + j % n_around;
+        };
+        for (unsigned int j = 0; j < n_around; ++j)
+          {
+            result.faces.push_back({0, ring(0, j + 1), ring(0, j)});
+            if (ring_heights.size() == 2)
+              result.faces.push_back(
+                {ring(0, j), ring(0, j + 1), ring(1, j + 1), ring(1, j)});
+            const unsigned int last = ring_heights.size() - 1;
+            result.faces.push_back(
+              {top_centre, ring(last, j), ring(last, j + 1)});
+          }
+      }
+    else if (outline.shape == Shape::box)
       {
         const Point<dim> &a = outline.lower_corner, &b = outline.upper_corner;
         // Vertex k has coordinate d from b where bit d of k is set.
@@ -394,10 +610,18 @@ namespace impm
   RigidBody<dim>::description() const
   {
     std::ostringstream out;
-    out << outline.shape_description() << ", moved by [" << displacement
-        << "], " << friction_names[static_cast<unsigned int>(friction)];
+    if (is_cone)
+      out << name << ": cone tip (" << cone.tip << ") axis (" << cone.axis
+          << ") height " << cone.height << " radius " << cone.radius
+          << " shaft " << cone.shaft_length;
+    else
+      out << outline.shape_description();
+    out << ", moved by [" << displacement << "], "
+        << friction_names[static_cast<unsigned int>(friction)];
     if (friction == Friction::coulomb)
       out << " mu = " << friction_coefficient;
+    if (face_points() > 1)
+      out << ", " << face_points() << " Gauss points per face direction";
     out << ", penalty factor " << penalty_factor;
     if (friction != Friction::frictionless)
       out << " (tangential " << tangential_penalty_factor << ")";

@@ -1,3 +1,5 @@
+#include <deal.II/base/quadrature_lib.h>
+
 #include <impm/base/errors.h>
 #include <impm/contact/rigid_contact.h>
 #include <impm/core/point_properties.h>
@@ -17,6 +19,8 @@ namespace impm
     : rigid_bodies(rigid_bodies)
     , grid(grid)
     , friction(has_friction(rigid_bodies))
+    , faces_points(max_face_points(rigid_bodies))
+    , n_traction_entries(traction_entries(rigid_bodies))
     , displacement(rigid_bodies.size())
     , displacement_increment(rigid_bodies.size())
     , forces_on_bodies(rigid_bodies.size())
@@ -33,6 +37,36 @@ namespace impm
       if (body.friction != RigidBody<dim>::Friction::frictionless)
         return true;
     return false;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  RigidContact<dim>::max_face_points(
+    const std::vector<RigidBody<dim>> &rigid_bodies)
+  {
+    unsigned int largest = 1;
+    for (const auto &body : rigid_bodies)
+      {
+        unsigned int n = 1;
+        for (unsigned int d = 1; d < dim; ++d)
+          n *= body.face_points();
+        largest = std::max(largest, n);
+      }
+    return largest;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  RigidContact<dim>::traction_entries(
+    const std::vector<RigidBody<dim>> &rigid_bodies)
+  {
+    return has_friction(rigid_bodies) ?
+             2 * dim * max_face_points(rigid_bodies) * dim :
+             0;
   }
 
 
@@ -125,38 +159,59 @@ namespace impm
                          centre[d] <= reach[b].second[d];
                 if (!near)
                   continue;
-                Probe probe;
+                const RigidBody<dim> &body = rigid_bodies[b];
+                Probe                 probe;
                 probe.point               = p;
                 probe.body                = b;
-                probe.face                = face;
-                probe.start_position      = centre;
                 probe.facing.normal       = Tensor<1, dim>();
                 probe.facing.normal[axis] = sign;
-                probe.facing.start =
-                  centre - rigid_bodies[b].displacement_at(start);
                 // The penalty lets a face in by p h / (alpha E), less than
                 // h / alpha for any pressure below E.
-                probe.facing.tolerance =
-                  smallest_cell / rigid_bodies[b].penalty_factor;
+                probe.facing.tolerance   = smallest_cell / body.penalty_factor;
                 probe.facing.half_length = half_length;
-                probe.area               = 1.;
+                double face_area         = 1.;
                 for (unsigned int d = 0; d < dim; ++d)
                   if (d != axis)
-                    probe.area *= 2. * half_length[d];
+                    face_area *= 2. * half_length[d];
                 const double modulus =
                   system.point_steps[p].material->elastic_modulus();
-                probe.stiffness =
-                  rigid_bodies[b].penalty_factor * modulus / smallest_cell;
+                probe.stiffness = body.penalty_factor * modulus / smallest_cell;
                 probe.tangential_stiffness =
-                  rigid_bodies[b].tangential_penalty_factor * modulus /
-                  smallest_cell;
-                if (traction_index != PointLayout::absent)
-                  for (unsigned int d = 0; d < dim; ++d)
-                    probe.previous_traction[d] =
-                      properties[traction_index + face * dim + d];
+                  body.tangential_penalty_factor * modulus / smallest_cell;
                 system.face_weights(
                   p, position, half_length, axis, sign, probe.weights);
-                probes.push_back(probe);
+                // The face's Gauss points (a box: its centre, with the
+                // face's overlap), each moving with the face's mean
+                // displacement.
+                const unsigned int per_direction = body.face_points();
+                const QGauss<1>    gauss(per_direction);
+                unsigned int       n_points = 1;
+                for (unsigned int d = 1; d < dim; ++d)
+                  n_points *= per_direction;
+                for (unsigned int k = 0; k < n_points; ++k)
+                  {
+                    Point<dim>   at     = centre;
+                    double       weight = 1.;
+                    unsigned int rest   = k;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      if (d != axis)
+                        {
+                          const unsigned int i = rest % per_direction;
+                          rest /= per_direction;
+                          at[d] +=
+                            (2. * gauss.point(i)[0] - 1.) * half_length[d];
+                          weight *= gauss.weight(i);
+                        }
+                    probe.slot           = face * faces_points + k;
+                    probe.start_position = at;
+                    probe.facing.start   = at - body.displacement_at(start);
+                    probe.area           = weight * face_area;
+                    if (traction_index != PointLayout::absent)
+                      for (unsigned int d = 0; d < dim; ++d)
+                        probe.previous_traction[d] =
+                          properties[traction_index + probe.slot * dim + d];
+                    probes.push_back(probe);
+                  }
               }
           }
         ++p;
@@ -328,7 +383,8 @@ namespace impm
       force = BodyForce();
     std::vector<double> tractions;
     if (friction)
-      tractions.assign(material_points.n_local_points() * traction_entries, 0.);
+      tractions.assign(material_points.n_local_points() * n_traction_entries,
+                       0.);
     for (const Probe &probe : probes)
       {
         if (!probe.active)
@@ -340,7 +396,7 @@ namespace impm
         force.n_slipping += probe.slipping ? 1 : 0;
         if (friction)
           for (unsigned int d = 0; d < dim; ++d)
-            tractions[probe.point * traction_entries + probe.face * dim + d] =
+            tractions[probe.point * n_traction_entries + probe.slot * dim + d] =
               probe.traction[d];
       }
     const MPI_Comm communicator = grid.get_triangulation().get_communicator();

@@ -12,13 +12,18 @@ namespace impm
 {
   template <int dim>
   void
-  Body<dim>::declare_shape_parameters(ParameterHandler &prm)
+  Body<dim>::declare_shape_parameters(ParameterHandler  &prm,
+                                      const std::string &extra_shapes)
   {
-    prm.declare_entry("Shape",
-                      "box",
-                      Patterns::Selection("box|disc|sphere|polygon"),
-                      "Shape of the region: box (2D, 3D), "
-                      "disc (2D), sphere (3D) or polygon (2D).");
+    prm.declare_entry(
+      "Shape",
+      "box",
+      Patterns::Selection("box|disc|sphere|polygon" + extra_shapes),
+      "Shape of the region: box (2D, 3D), "
+      "disc (2D), sphere (3D) or polygon (2D)" +
+        (extra_shapes.empty() ?
+           std::string(".") :
+           ", or " + extra_shapes.substr(1) + " (rigid bodies, 3D)."));
     prm.declare_entry("Lower corner",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),

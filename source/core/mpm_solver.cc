@@ -59,9 +59,8 @@ namespace impm
                       communicator,
                       acceleration_from_the_start(this->force_effects),
                       resume_state,
-                      RigidContact<dim>::has_friction(parameters.rigid_bodies) ?
-                        RigidContact<dim>::traction_entries :
-                        0)
+                      RigidContact<dim>::traction_entries(
+                        parameters.rigid_bodies))
     , ghost_stabilisation(
         parameters.stabilisation.enabled ?
           std::make_unique<GhostStabilisation<dim>>(parameters.stabilisation,

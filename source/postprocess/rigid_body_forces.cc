@@ -12,7 +12,8 @@ namespace impm
      * and the progress log): per body k the total force's components
      * `rigid_k_force_x`, ..., the sizes of its normal part (the pressures)
      * `rigid_k_normal_force` and of its tangential part (friction)
-     * `rigid_k_friction_force`, the number of domain faces in contact
+     * `rigid_k_friction_force`, the number of probes in contact (domain
+     * faces, or Gauss points on them: RigidBody::face_points())
      * `rigid_k_contacts` and of those that slip `rigid_k_slipping`. Forces in N
      * (per m of thickness in 2D). Created only in scenes with rigid bodies.
      */

@@ -286,7 +286,7 @@ namespace impm
               }
             std::snprintf(buffer,
                           sizeof(buffer),
-                          ", normal part %.6f, friction part %.6f, %u faces "
+                          ", normal part %.6f, friction part %.6f, %u probes "
                           "in contact, %u slipping\n",
                           body_force.normal.norm() / force,
                           body_force.tangential.norm() / force,

@@ -18,7 +18,8 @@ namespace impm
 
   /**
    * @brief A rigid body of a scene: a shape (box, disc, sphere or polygon,
-   * as a Body's) that moves through the grid by a prescribed displacement,
+   * as a Body's, or in 3D a cone on a cylindrical shaft, a penetrometer)
+   * that moves through the grid by a prescribed displacement,
    * ramped with the load factor, and touches the material points with a
    * penalty contact and Coulomb friction (RigidContact).
    *
@@ -165,14 +166,52 @@ namespace impm
     Surface
     surface(const Tensor<1, dim> &displacement) const;
 
+    /**
+     * @brief The Gauss points per direction along a face of a point's
+     * domain at which the body is probed: 1 for a box (the face's centre,
+     * with the face's exact overlap of the side), 'Face quadrature points'
+     * for the other shapes.
+     */
+    unsigned int
+    face_points() const
+    {
+      return !is_cone && outline.shape == Body<dim>::Shape::box ?
+               1 :
+               face_quadrature_points;
+    }
+
     /** @brief A one-line description for the start-up report. */
     std::string
     description() const;
 
+    /**
+     * @brief A cone on a cylindrical shaft (3D): the solid swept by
+     * turning its profile about the axis.
+     */
+    struct Cone
+    {
+      /** The tip. */
+      Point<dim> tip;
+      /** Unit vector from the tip toward the base. */
+      Tensor<1, dim> axis;
+      /** Radius of the base (and the shaft), height from the tip to the
+       *  base and the shaft's length above the base. */
+      double radius = 0., height = 0., shaft_length = 0.;
+      /** The profile in the plane through the axis, as (distance from the
+       *  axis, height above the tip), mirrored about the axis: a closed
+       *  polygon. */
+      std::vector<Point<2>> profile;
+    };
+
     /** Name in messages and columns ("Rigid body 1", ...). */
     std::string name;
-    /** The shape (only its geometry entries are used). */
+    /** The shape (only its geometry entries are used; not for a
+     *  cone). */
     Body<dim> outline;
+    /** Whether the body is a cone (then @p cone holds it). */
+    bool is_cone = false;
+    /** The cone (is_cone only). */
+    Cone cone;
     /** Displacement at load factor 1. */
     Tensor<1, dim> displacement;
     /** The friction law. */
@@ -186,6 +225,14 @@ namespace impm
     /** Tangential penalty factor: the stick stiffness per area is this
      *  times E / h. */
     double tangential_penalty_factor = 10.;
+    /** Gauss points per direction on a face (not for boxes). */
+    unsigned int face_quadrature_points = 3;
+
+  private:
+    /** @brief Read the cone's entries (Tip, Axis, Cone height, Cone
+     *  radius, Shaft length) into @p cone. */
+    void
+    parse_cone(ParameterHandler &prm);
   };
 } // namespace impm
 

@@ -51,8 +51,19 @@ namespace impm
   class RigidContact
   {
   public:
-    /** Values of the friction traction per point: dim per face. */
-    static constexpr unsigned int traction_entries = 2 * dim * dim;
+    /**
+     * @brief The entries of the friction tractions per point: dim per
+     * probe of each face (0 without friction).
+     */
+    static unsigned int
+    traction_entries(const std::vector<RigidBody<dim>> &rigid_bodies);
+
+    /**
+     * @brief The largest number of probes on a face of a point's domain
+     * over @p rigid_bodies (RigidBody::face_points() per direction).
+     */
+    static unsigned int
+    max_face_points(const std::vector<RigidBody<dim>> &rigid_bodies);
 
     /**
      * @brief Constructor.
@@ -133,7 +144,7 @@ namespace impm
       Tensor<1, dim> normal;
       /** Its part along the surface (friction). */
       Tensor<1, dim> tangential;
-      /** Number of faces in contact. */
+      /** Number of probes (faces or Gauss points on them) in contact. */
       unsigned int n_contacts = 0;
       /** Number of them that slip (Coulomb friction at its limit). */
       unsigned int n_slipping = 0;
@@ -166,14 +177,17 @@ namespace impm
       unsigned int point;
       /** Index of the rigid body. */
       unsigned int body;
-      /** Face: 2 axis + (1 if on the + side). */
-      unsigned int face;
+      /** Which of the point's probes: face (2 axis + 1 if on the + side)
+       *  times max_face_points() plus the Gauss point on the face; its
+       *  friction traction's place in the point's properties. */
+      unsigned int slot;
       /** The face's centre at the start of the step. */
       Point<dim> start_position;
       /** The face as the body's proximity() needs it: its outward normal,
        *  start and half-lengths. */
       typename RigidBody<dim>::Facing facing;
-      /** The face's area (length in 2D). */
+      /** The face's area (length in 2D) times the Gauss point's
+       *  weight. */
       double area;
       /** Normal and tangential penalty stiffness per area. */
       double stiffness, tangential_stiffness;
@@ -206,6 +220,8 @@ namespace impm
     const BackgroundGrid<dim>         &grid;
     /** Whether the points store friction tractions. */
     const bool friction;
+    /** max_face_points() and traction_entries() of the bodies. */
+    const unsigned int faces_points, n_traction_entries;
     /** The bodies' displacement at the attempt's target, and its change
      *  over the attempt. */
     std::vector<Tensor<1, dim>> displacement, displacement_increment;

@@ -46,9 +46,12 @@ namespace impm
      * @brief Declare the entries of a shape (Shape, Lower corner, Upper
      * corner, Center, Radius, Vertices) in the current subsection: shared by
      * the bodies and the rigid bodies.
+     * @param extra_shapes Further names for the Shape selection (the rigid
+     * bodies' "|cone"), parsed by the caller.
      */
     static void
-    declare_shape_parameters(ParameterHandler &prm);
+    declare_shape_parameters(ParameterHandler  &prm,
+                             const std::string &extra_shapes = "");
 
     /**
      * @brief Read the entries of declare_shape_parameters() from the current
