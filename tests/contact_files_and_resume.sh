@@ -11,7 +11,11 @@
 #  2. stopped after step 1 with a checkpoint there and resumed (on MPIEXEC
 #     N processes if given): the same final summary (forces on both bodies,
 #     extents) and steps.csv as the uninterrupted run, so the friction
-#     tractions came through the checkpoint.
+#     tractions came through the checkpoint;
+#  3. the same with HDF5 point files, stopped and resumed: the bodies'
+#     surfaces form their own series, points_parts.pvd, with both bodies at
+#     each of the 4 output steps of points.xdmf, the plate's at full load
+#     where it was moved.
 # Usage: contact_files_and_resume.sh IMPM SCENE [MPIEXEC N]
 # (SCENE: tests/contact_block_sticking.prm)
 scene=$2
@@ -47,4 +51,17 @@ summary part2.txt > resumed_summary.txt
 compare full_summary.txt resumed_summary.txt "the resumed run ends in another state"
 untimed results/steps.csv > resumed_steps.csv
 compare full_steps.csv resumed_steps.csv "steps.csv of the resumed run differs"
+# 3. HDF5 point files: the bodies in a series of their own.
+rm -rf results
+h5=("${settings[@]}" --set "Output/Format=hdf5" --set "Checkpoint/Interval=1")
+"$impm" "$scene" "${h5[@]}" --stop-after-step 1 > h5_part1.txt 2>&1 || fail "the first HDF5 part failed"
+"${launcher[@]}" "$impm" "$scene" "${h5[@]}" --resume > h5_part2.txt 2>&1 || fail "the resumed HDF5 run failed"
+n_steps=$(grep -c '<Time ' results/points.xdmf)
+[ "$n_steps" -eq 4 ] || fail "points.xdmf has $n_steps output steps, not 4"
+for body in 1 2; do
+  [ "$(grep -c "file=\"rigid_${body}_" results/points_parts.pvd)" -eq "$n_steps" ] ||
+    fail "Rigid body $body is not in every step of points_parts.pvd"
+done
+grep -q 'timestep="1" group="" part="1" file="rigid_2_00003.vtu"' results/points_parts.pvd ||
+  fail "points_parts.pvd does not end with the plate at full load"
 echo "contact_files_and_resume: passed"

@@ -98,6 +98,19 @@ namespace impm
       if (root)
         rename_or_throw(temporary, directory + "/" + file);
     });
+    // The other parts (VTU files) get a .pvd series of their own.
+    if (other_parts)
+      run_collectively(communicator, [&]() {
+        if (!root)
+          return;
+        for (const std::string &part :
+             other_parts(stem.substr(base_name.size())))
+          series.emplace_back(time, part);
+        write_file_atomically(directory + "/" + base_name + "_parts.pvd",
+                              [&](std::ostream &out) {
+                                write_pvd_record(out);
+                              });
+      });
     const std::string series_file = directory + "/" + base_name + ".xdmf";
     this->write_xdmf_file(xdmf_entries, series_file + ".tmp", communicator);
     run_collectively(communicator, [&]() {

@@ -29,7 +29,9 @@ namespace impm
         "series) or hdf5 (one .h5 file per output step written by all "
         "processes together, the points.xdmf series; for large runs: one "
         "file per step whatever the number of processes; deal.II 9.4 "
-        "stores the fields in single precision, the positions in double).");
+        "stores the fields in single precision, the positions in double; "
+        "rigid bodies' surfaces, VTU files, in the series "
+        "points_parts.pvd).");
       prm.declare_entry("Analytical solution",
                         "none",
                         Patterns::Selection("none|column"),

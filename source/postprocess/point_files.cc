@@ -53,9 +53,7 @@ namespace impm
           add("rank", false);
         if (body)
           add("body", false);
-        if (context.rigid_contact != nullptr &&
-            context.parameters.output.format ==
-              Parameters::PointFileFormat::vtu)
+        if (context.rigid_contact != nullptr)
           output.other_parts =
             [this,
              directory = context.parameters.scene.output_directory,

@@ -113,10 +113,11 @@ namespace impm
   public:
     /**
      * @brief Files of other parts of the scene to add to each step of the
-     * `.pvd` series beside the points (VTU format only): called on rank 0
-     * with the step's file suffix ("_00040"), it writes its files into the
-     * output directory and returns their names. ParaView shows them as the
-     * parts 1, 2, ... of each step.
+     * `.pvd` series beside the points: called on rank 0 with the step's
+     * file suffix ("_00040"), it writes its files (VTU) into the output
+     * directory and returns their names. ParaView shows them as the parts
+     * 1, 2, ... of each step. With HDF5 point files (an `.xdmf` series)
+     * they form a `.pvd` series of their own, `<base name>_parts.pvd`.
      */
     std::function<std::vector<std::string>(const std::string &suffix)>
       other_parts;
