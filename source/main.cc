@@ -133,6 +133,7 @@ main(int argc, char **argv)
       for (const auto &assignment : overrides)
         impm::SceneInput::apply_override(prm, assignment);
       impm::SceneInput::check_numbers(prm);
+      impm::SceneInput::resolve_paths(prm, scene_file);
 
       if (!scene_file.empty())
         options.scene_file =

@@ -168,6 +168,8 @@ expect cone_in_2d "'Rigid body 1/Shape' = 'cone' is not allowed: a cone is 3D" -
 { cat "$(dirname "$base")/column_3d_gimp_plastic_8.prm"; printf 'set Number of rigid bodies = 1\nsubsection Rigid body 1\n set Shape = cone\n set Axis = 0, 0, 0\n set Displacement = 0, 0, 0\nend\n'; } > "$work/cone_axis.prm"
 expect cone_without_axis "'Rigid body 1/Axis' = '0, 0, 0' is not allowed: the direction needs a length > 0" - -- "$work/cone_axis.prm"
 { cat "$(dirname "$base")/column_3d_gimp_plastic_8.prm"; printf 'set Number of rigid bodies = 1\nsubsection Rigid body 1\n set Shape = cone\n set Cone radius = 0\n set Displacement = 0, 0, 0\nend\n'; } > "$work/cone_radius.prm"
+{ cat "$(dirname "$base")/column_3d_gimp_plastic_8.prm"; printf 'set Number of rigid bodies = 1\nsubsection Rigid body 1\n set Shape = stl\n set STL file = missing.stl\n set Displacement = 0, 0, 0\nend\n'; } > "$work/stl_missing.prm"
+expect stl_file_missing "'Rigid body 1/STL file' = '.*missing.stl' is not allowed: cannot open the file" - -- "$work/stl_missing.prm"
 expect cone_zero_radius "'Rigid body 1/Cone radius' = '0' is not allowed: it must be > 0" - -- "$work/cone_radius.prm"
 plus load_outside.prm "subsection Point load\n set Enabled = true\n set Positions = 40, 4\n set Force = 0, -1\nend"
 expect point_load_outside_grid "'Point load/Positions': \(40 4\) lies outside the grid \[0 0\] - \[16 8\]" - -- "$work/load_outside.prm"

@@ -35,6 +35,26 @@
 //    (0, -1);
 // 8. (-0.3, -0.4): outside below the corner (0, 0): gap 0.5, normal
 //    (-0.6, -0.8), derivative (I - n n) / 0.5.
+// STL surfaces (3D): the unit cube [0, 1]^3 as an ASCII STL file of 12
+// triangles (some listed clockwise from outside, all consistently), and the
+// octahedron |x| + |y| + |z| <= 1 as a binary STL file of 8 triangles:
+// 9. cube (0.5, 0.5, 0.9): inside under the top: gap -0.1, normal (0, 0, 1);
+// 10. cube (1.2, 0.5, 0.5): gap 0.2, normal (1, 0, 0);
+// 11. cube (1.3, 1.4, 0.5): nearest the edge x = y = 1 at (1, 1, 0.5):
+//     gap 0.5, normal (0.6, 0.8, 0);
+// 12. cube (1.1, 1.2, 1.2): nearest the corner (1, 1, 1): gap 0.3, normal
+//     (1/3, 2/3, 2/3);
+// 13. cube (0.9, 0.95, 0.5): inside, the side y = 1 nearest: gap -0.05,
+//     normal (0, 1, 0);
+// 14. octahedron (0.2, 0.2, 0.2): inside, below the face x + y + z = 1:
+//     gap -(1 - 0.6) / sqrt 3 = -0.230940, normal (1, 1, 1) / sqrt 3;
+// 15. octahedron (0, 0, 1.5): above the corner (0, 0, 1): gap 0.5, normal
+//     (0, 0, 1);
+// 16. octahedron (0.8, 0.8, 0): nearest the edge from (1, 0, 0) to
+//     (0, 1, 0), at (0.5, 0.5, 0): gap sqrt 0.18 = 0.424264, normal
+//     (0.707107, 0.707107, 0);
+// and a cube with one triangle missing or one turned over is refused with
+// a message naming the fault.
 // The normal's derivative is compared with central differences (step
 // 1e-6) at points on flat sides, on the turning of the cone (e_r) and at
 // the profile's corners, for the cone above and a cone tilted along
@@ -45,6 +65,8 @@
 
 #include <impm/contact/rigid_body.h>
 
+#include <cstdint>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 
@@ -176,6 +198,115 @@ main()
                                                  Point<2>(2.3, -0.1),
                                                  Point<2>(1.2, 0.8)}),
                           1e-6);
+
+  // STL surfaces.
+  {
+    const std::vector<Point<3>> corners = {Point<3>(0, 0, 0),
+                                           Point<3>(1, 0, 0),
+                                           Point<3>(1, 1, 0),
+                                           Point<3>(0, 1, 0),
+                                           Point<3>(0, 0, 1),
+                                           Point<3>(1, 0, 1),
+                                           Point<3>(1, 1, 1),
+                                           Point<3>(0, 1, 1)};
+    // Inward (clockwise from outside): the reader turns them over.
+    const std::vector<std::array<unsigned int, 3>> cube = {{{0, 1, 2}},
+                                                           {{0, 2, 3}},
+                                                           {{4, 6, 5}},
+                                                           {{4, 7, 6}},
+                                                           {{0, 5, 1}},
+                                                           {{0, 4, 5}},
+                                                           {{3, 2, 6}},
+                                                           {{3, 6, 7}},
+                                                           {{0, 3, 7}},
+                                                           {{0, 7, 4}},
+                                                           {{1, 5, 6}},
+                                                           {{1, 6, 2}}};
+    {
+      std::ofstream out("cube.stl");
+      out << std::setprecision(17) << "solid cube\n";
+      for (const auto &triangle : cube)
+        {
+          out << " facet normal 0 0 0\n  outer loop\n";
+          for (const unsigned int v : triangle)
+            out << "   vertex " << corners[v] << "\n";
+          out << "  endloop\n endfacet\n";
+        }
+      out << "endsolid cube\n";
+    }
+    {
+      // Binary: header, count, then normal and three corners (floats) and
+      // two attribute bytes per triangle.
+      std::ofstream     out("octahedron.stl", std::ios::binary);
+      const std::string header(80, ' ');
+      out.write(header.data(), 80);
+      const std::uint32_t n = 8;
+      out.write(reinterpret_cast<const char *>(&n), 4);
+      for (const double sx : {-1., 1.})
+        for (const double sy : {-1., 1.})
+          for (const double sz : {-1., 1.})
+            {
+              // Counter-clockwise from outside when sx sy sz > 0.
+              float       values[12] = {0, 0, 0};
+              const bool  even       = sx * sy * sz > 0.;
+              const float a[3] = {float(sx), 0, 0}, b[3] = {0, float(sy), 0},
+                          c[3]      = {0, 0, float(sz)};
+              const float *order[3] = {a, even ? b : c, even ? c : b};
+              for (unsigned int k = 0; k < 3; ++k)
+                for (unsigned int d = 0; d < 3; ++d)
+                  values[3 + 3 * k + d] = order[k][d];
+              out.write(reinterpret_cast<const char *>(values), 48);
+              const std::uint16_t attribute = 0;
+              out.write(reinterpret_cast<const char *>(&attribute), 2);
+            }
+    }
+    std::cout << std::fixed;
+    const auto box = make_body<3>({{"Shape", "stl"},
+                                   {"STL file", "cube.stl"},
+                                   {"Displacement", "0, 0, 0"}});
+    print("cube 9", box, Point<3>(0.5, 0.5, 0.9));
+    print("cube 10", box, Point<3>(1.2, 0.5, 0.5));
+    print("cube 11", box, Point<3>(1.3, 1.4, 0.5));
+    print("cube 12", box, Point<3>(1.1, 1.2, 1.2));
+    print("cube 13", box, Point<3>(0.9, 0.95, 0.5));
+    const auto octahedron = make_body<3>({{"Shape", "stl"},
+                                          {"STL file", "octahedron.stl"},
+                                          {"Displacement", "0, 0, 0"}});
+    print("octahedron 14", octahedron, Point<3>(0.2, 0.2, 0.2));
+    print("octahedron 15", octahedron, Point<3>(0, 0, 1.5));
+    print("octahedron 16", octahedron, Point<3>(0.8, 0.8, 0));
+    std::cout << std::defaultfloat;
+    impm_tests::check_below(
+      "STL cube and octahedron: normal derivative against central "
+      "differences",
+      std::max(derivative_difference(box,
+                                     {Point<3>(1.3, 1.4, 0.5),
+                                      Point<3>(1.1, 1.2, 1.2),
+                                      Point<3>(0.5, 0.5, 0.9),
+                                      Point<3>(-0.2, 0.3, -0.1)}),
+               derivative_difference(octahedron,
+                                     {Point<3>(0, 0.01, 1.5),
+                                      Point<3>(0.8, 0.8, 0.01),
+                                      Point<3>(0.3, 0.2, 0.1)})),
+      1e-6);
+    for (const unsigned int fault : {0, 1})
+      {
+        auto faulty = cube;
+        if (fault == 0)
+          faulty.pop_back();
+        else
+          std::swap(faulty[3][1], faulty[3][2]);
+        try
+          {
+            TriangulatedSurface surface(corners, faulty);
+            std::cout << "a faulty cube was accepted" << std::endl;
+          }
+        catch (const std::runtime_error &error)
+          {
+            std::cout << "refused: " << error.what() << std::endl;
+          }
+      }
+  }
 
   // The tilted cone's box holds its surface's vertices and touches it.
   const auto box     = tilted.bounding_box(Tensor<1, 3>());

@@ -83,7 +83,14 @@ namespace impm
     for (unsigned int k = 1; k <= max_rigid_bodies; ++k)
       {
         prm.enter_subsection("Rigid body " + std::to_string(k));
-        Body<dim>::declare_shape_parameters(prm, "|cone");
+        Body<dim>::declare_shape_parameters(prm, "|cone|stl");
+        prm.declare_entry("STL file",
+                          "",
+                          Patterns::Anything(),
+                          "stl (3D): a closed, consistently oriented "
+                          "triangulated surface, binary or ASCII STL, "
+                          "coordinates in m; a relative path is relative to "
+                          "the scene file's directory.");
         prm.declare_entry("Tip",
                           "0, 0, 0",
                           Patterns::List(Patterns::Double(), 3, 3),
@@ -170,16 +177,33 @@ namespace impm
   {
     name = "Rigid body " + std::to_string(number);
     prm.enter_subsection(name);
-    outline.name = name;
-    is_cone      = prm.get("Shape") == "cone";
-    if (!is_cone)
-      outline.parse_shape(prm);
-    else if (dim != 3)
+    outline.name   = name;
+    is_cone        = prm.get("Shape") == "cone";
+    const bool stl = prm.get("Shape") == "stl";
+    if ((is_cone || stl) && dim != 3)
       Parameters::bad_value(name + "/Shape",
-                            "cone",
-                            "a cone is 3D (in 2D, a polygon).");
-    else
+                            prm.get("Shape"),
+                            std::string(is_cone ? "a cone" : "an STL surface") +
+                              " is 3D (in 2D, a polygon).");
+    if (is_cone)
       parse_cone(prm);
+    else if (stl)
+      {
+        surface_file = prm.get("STL file");
+        try
+          {
+            surface_mesh =
+              std::make_shared<const TriangulatedSurface>(surface_file);
+          }
+        catch (const std::runtime_error &error)
+          {
+            Parameters::bad_value(name + "/STL file",
+                                  surface_file,
+                                  std::string(error.what()) + ".");
+          }
+      }
+    else
+      outline.parse_shape(prm);
     const auto values = Parameters::get_vector(prm, name, "Displacement", dim);
     for (unsigned int d = 0; d < dim; ++d)
       displacement[d] = values[d];
@@ -253,6 +277,15 @@ namespace impm
     const Point<dim> y = x - body_displacement;
     Proximity        result;
     using Shape = typename Body<dim>::Shape;
+    if constexpr (dim == 3)
+      if (surface_mesh)
+        {
+          const auto mesh          = surface_mesh->proximity(y);
+          result.gap               = mesh.gap;
+          result.normal            = mesh.normal;
+          result.normal_derivative = mesh.normal_derivative;
+          return result;
+        }
     if (is_cone)
       {
         // The profile's proximity in the plane through the axis and y,
@@ -462,6 +495,9 @@ namespace impm
   RigidBody<dim>::bounding_box(const Tensor<1, dim> &body_displacement) const
   {
     auto box = outline.bounding_box();
+    if constexpr (dim == 3)
+      if (surface_mesh)
+        box = surface_mesh->bounding_box();
     if (is_cone)
       {
         // The tip and the circles of the base and the shaft's top: a
@@ -493,7 +529,15 @@ namespace impm
     Surface result;
     using Shape   = typename Body<dim>::Shape;
     auto &corners = result.vertices;
-    if (is_cone)
+    if (surface_mesh)
+      {
+        // The triangles (3D only: the mesh's points are the corners).
+        if constexpr (dim == 3)
+          corners = surface_mesh->get_vertices();
+        for (const auto &triangle : surface_mesh->get_triangles())
+          result.faces.push_back({triangle[0], triangle[1], triangle[2]});
+      }
+    else if (is_cone)
       {
         // The profile's corners off the axis turned about it in 32 steps:
         // the tip, one ring per corner, the centre of the top.
@@ -610,7 +654,10 @@ namespace impm
   RigidBody<dim>::description() const
   {
     std::ostringstream out;
-    if (is_cone)
+    if (surface_mesh)
+      out << name << ": surface '" << surface_file << "' of "
+          << surface_mesh->get_triangles().size() << " triangles";
+    else if (is_cone)
       out << name << ": cone tip (" << cone.tip << ") axis (" << cone.axis
           << ") height " << cone.height << " radius " << cone.radius
           << " shaft " << cone.shaft_length;

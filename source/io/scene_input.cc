@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -314,6 +315,28 @@ namespace impm
         throw InputError(name +
                          ": the scene sets no entry (an empty file?); run "
                          "impm without a scene for the default one.");
+    }
+
+
+
+    void
+    resolve_paths(dealii::ParameterHandler &prm, const std::string &scene_file)
+    {
+      if (scene_file.empty())
+        return;
+      const auto directory =
+        std::filesystem::absolute(scene_file).parent_path();
+      for (unsigned int k = 1;; ++k)
+        {
+          const std::string subsection = "Rigid body " + std::to_string(k);
+          if (!prm.subsection_path_exists({subsection}))
+            break;
+          prm.enter_subsection(subsection);
+          const std::filesystem::path file = prm.get("STL file");
+          if (!file.empty() && file.is_relative())
+            prm.set("STL file", (directory / file).lexically_normal().string());
+          prm.leave_subsection();
+        }
     }
 
 

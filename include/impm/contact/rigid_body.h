@@ -5,9 +5,11 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <impm/contact/triangulated_surface.h>
 #include <impm/core/body.h>
 
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,7 +20,8 @@ namespace impm
 
   /**
    * @brief A rigid body of a scene: a shape (box, disc, sphere or polygon,
-   * as a Body's, or in 3D a cone on a cylindrical shaft, a penetrometer)
+   * as a Body's, or in 3D a cone on a cylindrical shaft, a penetrometer,
+   * or a closed triangulated surface read from an STL file)
    * that moves through the grid by a prescribed displacement,
    * ramped with the load factor, and touches the material points with a
    * penalty contact and Coulomb friction (RigidContact).
@@ -175,7 +178,8 @@ namespace impm
     unsigned int
     face_points() const
     {
-      return !is_cone && outline.shape == Body<dim>::Shape::box ?
+      return !is_cone && !surface_mesh &&
+                 outline.shape == Body<dim>::Shape::box ?
                1 :
                face_quadrature_points;
     }
@@ -212,6 +216,11 @@ namespace impm
     bool is_cone = false;
     /** The cone (is_cone only). */
     Cone cone;
+    /** The surface read from 'STL file' (3D; null for the other
+     *  shapes). */
+    std::shared_ptr<const TriangulatedSurface> surface_mesh;
+    /** The STL file's name. */
+    std::string surface_file;
     /** Displacement at load factor 1. */
     Tensor<1, dim> displacement;
     /** The friction law. */

@@ -51,6 +51,16 @@ namespace impm
     check_numbers(const dealii::ParameterHandler &prm);
 
     /**
+     * @brief Make the file names the scene gives (the rigid bodies' 'STL
+     * file') that are relative paths relative to the directory of @p
+     * scene_file, where they were written, instead of the working
+     * directory; with no scene file (the default scene) they stay as they
+     * are.
+     */
+    void
+    resolve_paths(dealii::ParameterHandler &prm, const std::string &scene_file);
+
+    /**
      * @brief A deal.II pattern description ("[Double 0...MAX_DOUBLE
      * (inclusive)]") in words ("a number >= 0").
      */
