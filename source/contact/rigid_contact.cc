@@ -19,7 +19,7 @@ namespace impm
     : rigid_bodies(rigid_bodies)
     , grid(grid)
     , friction(has_friction(rigid_bodies))
-    , faces_points(max_face_points(rigid_bodies))
+    , probes_per_face(max_face_points(rigid_bodies))
     , n_traction_entries(traction_entries(rigid_bodies))
     , displacement(rigid_bodies.size())
     , displacement_increment(rigid_bodies.size())
@@ -202,7 +202,7 @@ namespace impm
                             (2. * gauss.point(i)[0] - 1.) * half_length[d];
                           weight *= gauss.weight(i);
                         }
-                    probe.slot           = face * faces_points + k;
+                    probe.slot           = face * probes_per_face + k;
                     probe.start_position = at;
                     probe.facing.start   = at - body.displacement_at(start);
                     probe.area           = weight * face_area;

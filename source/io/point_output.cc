@@ -103,13 +103,8 @@ namespace impm
       run_collectively(communicator, [&]() {
         if (!root)
           return;
-        for (const std::string &part :
-             other_parts(stem.substr(base_name.size())))
-          series.emplace_back(time, part);
-        write_file_atomically(directory + "/" + base_name + "_parts.pvd",
-                              [&](std::ostream &out) {
-                                write_pvd_record(out);
-                              });
+        add_other_parts(time, stem);
+        write_series(base_name + "_parts.pvd");
       });
     const std::string series_file = directory + "/" + base_name + ".xdmf";
     this->write_xdmf_file(xdmf_entries, series_file + ".tmp", communicator);
@@ -161,16 +156,31 @@ namespace impm
                                 });
 
           series.emplace_back(time, stem + ".pvtu");
-          if (other_parts)
-            for (const std::string &file :
-                 other_parts(stem.substr(base_name.size())))
-              series.emplace_back(time, file);
-          write_file_atomically(directory + "/" + base_name + ".pvd",
-                                [&](std::ostream &out) {
-                                  write_pvd_record(out);
-                                });
+          add_other_parts(time, stem);
+          write_series(base_name + ".pvd");
         }
     });
+  }
+
+
+
+  template <int dim>
+  void
+  PointOutput<dim>::add_other_parts(const double time, const std::string &stem)
+  {
+    if (other_parts)
+      for (const std::string &file : other_parts(stem.substr(base_name.size())))
+        series.emplace_back(time, file);
+  }
+
+
+
+  template <int dim>
+  void
+  PointOutput<dim>::write_series(const std::string &file_name) const
+  {
+    write_file_atomically(directory + "/" + file_name,
+                          [&](std::ostream &out) { write_pvd_record(out); });
   }
 
 

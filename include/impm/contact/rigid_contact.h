@@ -221,7 +221,7 @@ namespace impm
     /** Whether the points store friction tractions. */
     const bool friction;
     /** max_face_points() and traction_entries() of the bodies. */
-    const unsigned int faces_points, n_traction_entries;
+    const unsigned int probes_per_face, n_traction_entries;
     /** The bodies' displacement at the attempt's target, and its change
      *  over the attempt. */
     std::vector<Tensor<1, dim>> displacement, displacement_increment;

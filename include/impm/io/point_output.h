@@ -98,6 +98,16 @@ namespace impm
     void
     write_pvd_record(std::ostream &out) const;
 
+    /** @brief Add the files other_parts() writes for the output step
+     *  @p stem to the series at @p time (rank 0). */
+    void
+    add_other_parts(const double time, const std::string &stem);
+
+    /** @brief Write the series as the `.pvd` file @p file_name in the
+     *  output directory (rank 0). */
+    void
+    write_series(const std::string &file_name) const;
+
     /** @brief write() for the hdf5 format. */
     void
     write_hdf5_files(const double time, const std::string &stem);
