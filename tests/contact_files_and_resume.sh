@@ -15,7 +15,13 @@
 #  3. the same with HDF5 point files, stopped and resumed: the bodies'
 #     surfaces form their own series, points_parts.pvd, with both bodies at
 #     each of the 4 output steps of points.xdmf, the plate's at full load
-#     where it was moved.
+#     where it was moved;
+#  4. a body pushed by a force (tests/contact_plate_force_driven.prm, its
+#     displacement an unknown) stopped after step 4 and resumed: the same
+#     summary (the plate's final displacement among it) and steps.csv
+#     (rigid_1_displacement_y in every step) as its uninterrupted run, and
+#     the plate's surface at full load where the unknown put it (y from
+#     0.750002 to 1.000002 m).
 # Usage: contact_files_and_resume.sh IMPM SCENE [MPIEXEC N]
 # (SCENE: tests/contact_block_sticking.prm)
 scene=$2
@@ -64,4 +70,30 @@ for body in 1 2; do
 done
 grep -q 'timestep="1" group="" part="1" file="rigid_2_00003.vtu"' results/points_parts.pvd ||
   fail "points_parts.pvd does not end with the plate at full load"
+# 4. A body pushed by a force: its displacement through the checkpoint.
+rm -rf results
+pushed=("$here/contact_plate_force_driven.prm" --set "Testing/Check tangent=false"
+        --set "Output/Interval=10")
+"$impm" "${pushed[@]}" > pushed_full.txt 2>&1 || fail "the pushed plate's run failed"
+grep -q "^final displacement of Rigid body 1 (force-driven): y -1.99998" pushed_full.txt ||
+  fail "the pushed plate's run does not report its displacement"
+summary pushed_full.txt > pushed_full_summary.txt
+untimed results/steps.csv > pushed_full_steps.csv
+rm -rf results
+"$impm" "${pushed[@]}" --set "Checkpoint/Interval=1" --stop-after-step 4 \
+  > pushed_part1.txt 2>&1 || fail "the pushed plate's first part failed"
+"${launcher[@]}" "$impm" "${pushed[@]}" --set "Checkpoint/Interval=1" --resume \
+  > pushed_part2.txt 2>&1 || fail "the pushed plate's resumed run failed"
+summary pushed_part2.txt > pushed_resumed_summary.txt
+compare pushed_full_summary.txt pushed_resumed_summary.txt "the resumed pushed plate ends in another state"
+untimed results/steps.csv > pushed_resumed_steps.csv
+compare pushed_full_steps.csv pushed_resumed_steps.csv "steps.csv of the resumed pushed plate differs"
+/usr/bin/python3 - results/rigid_1_00010.vtu <<'PYTHON' || fail "the pushed plate's surface is not where its unknown put it"
+import sys, vtk
+reader = vtk.vtkXMLUnstructuredGridReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+bounds = reader.GetOutput().GetBounds()
+assert abs(bounds[2] - 0.750002) < 1e-6 and abs(bounds[3] - 1.000002) < 1e-6, bounds
+PYTHON
 echo "contact_files_and_resume: passed"

@@ -1,3 +1,4 @@
+#include <impm/base/names.h>
 #include <impm/contact/rigid_body.h>
 #include <impm/core/parameters.h>
 
@@ -120,7 +121,27 @@ namespace impm
                           Patterns::List(Patterns::Double(), 2, 3),
                           "The body's displacement at the full load, one "
                           "component per dimension, in m; ramped with the "
-                          "load factor like every load.");
+                          "load factor like every load. Zero on the "
+                          "'Force-driven components'.");
+        prm.declare_entry(
+          "Force-driven components",
+          "",
+          Patterns::Anything(),
+          "The components (a comma-separated list of x, y, z; empty: none) "
+          "in which the body is pushed by 'Force' instead of moved by "
+          "'Displacement': its displacement there is an unknown of the "
+          "Newton solve, found by the balance of the force with the "
+          "material's contact force. The body must touch the material "
+          "(a face of a point's domain on or inside its surface) from the "
+          "first load step.");
+        prm.declare_entry("Force",
+                          "",
+                          Patterns::List(Patterns::Double(), 0, 3),
+                          "The force on the body at the full load, one "
+                          "component per dimension, in N (per m of "
+                          "thickness in 2D); ramped with the load factor. "
+                          "Zero but on the 'Force-driven components' "
+                          "(empty: zero).");
         prm.declare_entry(
           "Friction",
           "frictionless",
@@ -207,6 +228,7 @@ namespace impm
     const auto values = Parameters::get_vector(prm, name, "Displacement", dim);
     for (unsigned int d = 0; d < dim; ++d)
       displacement[d] = values[d];
+    parse_force(prm);
     friction             = static_cast<Friction>(Parameters::selection_index(
       friction_names, name + "/Friction", prm.get("Friction")));
     friction_coefficient = prm.get_double("Friction coefficient");
@@ -227,6 +249,54 @@ namespace impm
                             prm.get("Tangential penalty factor"),
                             "it must be > 0 with friction.");
     prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  RigidBody<dim>::parse_force(ParameterHandler &prm)
+  {
+    force_components.clear();
+    const std::string entry = name + "/Force-driven components";
+    const std::string value = prm.get("Force-driven components");
+    for (const std::string &item : Utilities::split_string_list(value, ','))
+      {
+        unsigned int axis = dim;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (item == Names::axis(d))
+            axis = d;
+        if (axis == dim)
+          Parameters::bad_value(entry,
+                                value,
+                                std::string("it must be a list of ") +
+                                  (dim == 2 ? "x, y" : "x, y, z") +
+                                  ", each at most once (empty: none).");
+        if (is_force_driven(axis))
+          Parameters::bad_value(entry, value, "each component at most once.");
+        force_components.push_back(axis);
+      }
+    std::sort(force_components.begin(), force_components.end());
+    // Empty: no force.
+    const auto values =
+      Parameters::get_optional_vector(prm, name, "Force", dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        force[d] = values.empty() ? 0. : values[d];
+        if (force[d] != 0. && !is_force_driven(d))
+          Parameters::bad_value(name + "/Force",
+                                prm.get("Force"),
+                                "a force acts only on the 'Force-driven "
+                                "components' (component " +
+                                  Names::axis(d) + " is not one).");
+        if (displacement[d] != 0. && is_force_driven(d))
+          Parameters::bad_value(name + "/Displacement",
+                                prm.get("Displacement"),
+                                "zero on the 'Force-driven components' "
+                                "(component " +
+                                  Names::axis(d) +
+                                  " is one: 'Force' drives it).");
+      }
   }
 
 
@@ -663,8 +733,14 @@ namespace impm
           << " shaft " << cone.shaft_length;
     else
       out << outline.shape_description();
-    out << ", moved by [" << displacement << "], "
-        << friction_names[static_cast<unsigned int>(friction)];
+    out << ", moved by [" << displacement << "]";
+    if (!force_components.empty())
+      {
+        out << " but pushed by [" << force << "] in";
+        for (const unsigned int d : force_components)
+          out << ' ' << Names::axis(d);
+      }
+    out << ", " << friction_names[static_cast<unsigned int>(friction)];
     if (friction == Friction::coulomb)
       out << " mu = " << friction_coefficient;
     if (face_points() > 1)

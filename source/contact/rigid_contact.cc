@@ -12,6 +12,23 @@
 
 namespace impm
 {
+  namespace
+  {
+    /** The force-driven components of @p rigid_bodies, body by body. */
+    template <int dim>
+    std::vector<typename RigidContact<dim>::Unknown>
+    collect_unknowns(const std::vector<RigidBody<dim>> &rigid_bodies)
+    {
+      std::vector<typename RigidContact<dim>::Unknown> unknowns;
+      for (unsigned int b = 0; b < rigid_bodies.size(); ++b)
+        for (const unsigned int d : rigid_bodies[b].force_components)
+          unknowns.push_back({b, d});
+      return unknowns;
+    }
+  } // namespace
+
+
+
   template <int dim>
   RigidContact<dim>::RigidContact(
     const std::vector<RigidBody<dim>> &rigid_bodies,
@@ -21,8 +38,13 @@ namespace impm
     , friction(has_friction(rigid_bodies))
     , probes_per_face(max_face_points(rigid_bodies))
     , n_traction_entries(traction_entries(rigid_bodies))
+    , body_unknowns(collect_unknowns(rigid_bodies))
     , displacement(rigid_bodies.size())
+    , start_displacement(rigid_bodies.size())
     , displacement_increment(rigid_bodies.size())
+    , accepted_unknowns(rigid_bodies.size())
+    , applied_force(rigid_bodies.size())
+    , force_on_material(rigid_bodies.size())
     , forces_on_bodies(rigid_bodies.size())
   {}
 
@@ -96,6 +118,40 @@ namespace impm
     throw_if_any_failed(message,
                         grid.get_triangulation().get_communicator(),
                         false);
+
+    // A body pushed by a force must rest on the material: some face of a
+    // point's domain on or inside its surface.
+    for (unsigned int b = 0; b < rigid_bodies.size(); ++b)
+      {
+        const RigidBody<dim> &body = rigid_bodies[b];
+        if (body.force_components.empty())
+          continue;
+        bool touches = false;
+        for (const auto &point : material_points.particles())
+          {
+            const PointState<dim> state(point.get_properties());
+            const Tensor<1, dim>  half_length = state.domain_half_length();
+            for (unsigned int face = 0; face < 2 * dim && !touches; ++face)
+              {
+                Point<dim> centre = point.get_location();
+                centre[face / 2] +=
+                  (face % 2 == 1 ? 1. : -1.) * half_length[face / 2];
+                touches = body.proximity(centre, Tensor<1, dim>()).gap <= 0.;
+              }
+            if (touches)
+              break;
+          }
+        if (Utilities::MPI::max(touches ? 1 : 0,
+                                grid.get_triangulation().get_communicator()) ==
+            0)
+          throw_if_any_failed(
+            body.name +
+              " is pushed by a force ('Force-driven components') but "
+              "touches no material at the start: place it on the material "
+              "(a face of a point's domain on or inside its surface).",
+            grid.get_triangulation().get_communicator(),
+            false);
+      }
   }
 
 
@@ -116,21 +172,26 @@ namespace impm
       }
     // The region each body may touch in this attempt: its boxes at the
     // start and the target, grown by a cell.
+    // A body pushed by a force starts the attempt where the last step
+    // left it, and may move about a cell more within it (the step control
+    // cuts a step that moves it further).
     std::vector<std::pair<Point<dim>, Point<dim>>> reach;
     for (unsigned int b = 0; b < rigid_bodies.size(); ++b)
       {
         const auto &body = rigid_bodies[b];
-        displacement[b]  = body.displacement_at(target);
-        displacement_increment[b] =
-          displacement[b] - body.displacement_at(start);
+        start_displacement[b] =
+          body.displacement_at(start) + accepted_unknowns[b];
+        displacement[b] = body.displacement_at(target) + accepted_unknowns[b];
+        displacement_increment[b] = displacement[b] - start_displacement[b];
+        applied_force[b]          = target * body.force;
+        const double margin =
+          (body.force_components.empty() ? 1. : 2.) * largest_cell;
         auto       box   = body.bounding_box(displacement[b]);
-        const auto other = body.bounding_box(body.displacement_at(start));
+        const auto other = body.bounding_box(start_displacement[b]);
         for (unsigned int d = 0; d < dim; ++d)
           {
-            box.first[d] =
-              std::min(box.first[d], other.first[d]) - largest_cell;
-            box.second[d] =
-              std::max(box.second[d], other.second[d]) + largest_cell;
+            box.first[d]  = std::min(box.first[d], other.first[d]) - margin;
+            box.second[d] = std::max(box.second[d], other.second[d]) + margin;
           }
         reach.push_back(box);
       }
@@ -204,7 +265,7 @@ namespace impm
                         }
                     probe.slot           = face * probes_per_face + k;
                     probe.start_position = at;
-                    probe.facing.start   = at - body.displacement_at(start);
+                    probe.facing.start   = at - start_displacement[b];
                     probe.area           = weight * face_area;
                     if (traction_index != PointLayout::absent)
                       for (unsigned int d = 0; d < dim; ++d)
@@ -303,6 +364,8 @@ namespace impm
                                 const NodalVector         &increment,
                                 NodalVector               &internal_force)
   {
+    for (auto &force : force_on_material)
+      force = Tensor<1, dim>();
     for (Probe &probe : probes)
       {
         const PointStep<dim> &step     = system.point_steps[probe.point];
@@ -320,11 +383,161 @@ namespace impm
         if (!probe.active)
           continue;
         const Tensor<1, dim> force = probe.normal_force + probe.friction_force;
+        force_on_material[probe.body] += force;
         for (unsigned int v = 0; v < step.support.n_nodes; ++v)
           for (unsigned int i = 0; i < dim; ++i)
             internal_force.local_element(step.dofs[v * dim + i]) -=
               probe.weights[v] * force[i];
       }
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  RigidContact<dim>::unknown_residuals() const
+  {
+    Vector<double> residuals(body_unknowns.size());
+    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
+      residuals[j] =
+        force_on_material[body_unknowns[j].body][body_unknowns[j].component];
+    Utilities::MPI::sum(residuals,
+                        grid.get_triangulation().get_communicator(),
+                        residuals);
+    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
+      residuals[j] =
+        applied_force[body_unknowns[j].body][body_unknowns[j].component] -
+        residuals[j];
+    return residuals;
+  }
+
+
+
+  template <int dim>
+  double
+  RigidContact<dim>::applied_force_norm() const
+  {
+    double sum = 0.;
+    for (const Unknown &unknown : body_unknowns)
+      sum += std::pow(applied_force[unknown.body][unknown.component], 2);
+    return std::sqrt(sum);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::add_coupling(const LoadStepSystem<dim> &system,
+                                  std::vector<NodalVector>  &columns,
+                                  std::vector<NodalVector>  &rows,
+                                  FullMatrix<double>        &corner) const
+  {
+    const unsigned int m = body_unknowns.size();
+    columns.resize(m);
+    rows.resize(m);
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        grid.reinit_vector(columns[j]);
+        grid.reinit_vector(rows[j]);
+      }
+    corner.reinit(m, m);
+    // Unknowns of each body.
+    std::vector<std::vector<unsigned int>> of_body(rigid_bodies.size());
+    for (unsigned int j = 0; j < m; ++j)
+      of_body[body_unknowns[j].body].push_back(j);
+    for (const Probe &probe : probes)
+      {
+        if (!probe.active || of_body[probe.body].empty())
+          continue;
+        // The probe's force f depends on x - w (x the face's position, w
+        // the body's displacement): df/dw = -df/dx = -A.
+        const Tensor<2, dim> &A    = probe.force_derivative;
+        const PointStep<dim> &step = system.point_steps[probe.point];
+        for (const unsigned int j : of_body[probe.body])
+          {
+            const unsigned int c = body_unknowns[j].component;
+            // Internal force -N^T f: derivative N^T A e_c. Its force sum
+            // f_c: derivative e_c^T A N.
+            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+              for (unsigned int i = 0; i < dim; ++i)
+                {
+                  const auto dof = step.dofs[v * dim + i];
+                  columns[j].local_element(dof) += probe.weights[v] * A[i][c];
+                  rows[j].local_element(dof) += probe.weights[v] * A[c][i];
+                }
+            for (const unsigned int k : of_body[probe.body])
+              corner(j, k) -= A[c][body_unknowns[k].component];
+          }
+      }
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        columns[j].compress(VectorOperation::add);
+        rows[j].compress(VectorOperation::add);
+      }
+    Utilities::MPI::sum(corner,
+                        grid.get_triangulation().get_communicator(),
+                        corner);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::add_to_unknowns(const Vector<double> &correction)
+  {
+    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
+      {
+        const auto &[body, component] = body_unknowns[j];
+        displacement[body][component] += correction[j];
+        displacement_increment[body][component] += correction[j];
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  RigidContact<dim>::max_unknown_increment() const
+  {
+    double largest = 0.;
+    for (const auto &[body, component] : body_unknowns)
+      largest = std::max(largest,
+                         std::abs(displacement_increment[body][component]) /
+                           grid.cartesian().cell_size[component]);
+    return largest;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  RigidContact<dim>::displacement_of(const unsigned int k,
+                                     const double       load_factor) const
+  {
+    return rigid_bodies[k].displacement_at(load_factor) + accepted_unknowns[k];
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::save(RunState &state) const
+  {
+    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
+      state.set(
+        "contact.unknown " + std::to_string(j),
+        accepted_unknowns[body_unknowns[j].body][body_unknowns[j].component]);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::load(const RunState &state)
+  {
+    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
+      accepted_unknowns[body_unknowns[j].body][body_unknowns[j].component] =
+        state.get_double("contact.unknown " + std::to_string(j));
   }
 
 
@@ -379,6 +592,8 @@ namespace impm
   void
   RigidContact<dim>::accept(MaterialPoints<dim> &material_points)
   {
+    for (const auto &[body, component] : body_unknowns)
+      accepted_unknowns[body][component] = displacement[body][component];
     for (auto &force : forces_on_bodies)
       force = BodyForce();
     std::vector<double> tractions;

@@ -94,6 +94,8 @@ namespace impm
     problem.check_tangents(parameters.testing.check_tangent);
     if (rigid_contact && resume_state == nullptr)
       rigid_contact->check_start(material_points);
+    if (rigid_contact && resume_state != nullptr)
+      rigid_contact->load(*resume_state);
     if (Utilities::MPI::n_mpi_processes(communicator) > 1)
       grid.connect_cell_weight(
         [this](const typename Triangulation<dim>::cell_iterator &cell,
@@ -267,6 +269,8 @@ namespace impm
                 Utilities::MPI::n_mpi_processes(communicator)));
     control.save(state);
     material_points.save(state);
+    if (rigid_contact)
+      rigid_contact->save(state);
     postprocessors->save(state, elapsed);
     Checkpoint(parameters.scene.output_directory, communicator)
       .write(

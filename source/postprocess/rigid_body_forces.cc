@@ -23,7 +23,8 @@ namespace impm
     public:
       /** @brief Constructor. */
       explicit RigidBodyForces(const RunContext<dim> &context)
-        : n_bodies(context.rigid_contact->bodies().size())
+        : bodies(context.rigid_contact->bodies())
+        , n_bodies(bodies.size())
       {}
 
       std::vector<std::string>
@@ -39,6 +40,8 @@ namespace impm
             columns.push_back(prefix + "friction_force");
             columns.push_back(prefix + "contacts");
             columns.push_back(prefix + "slipping");
+            for (const unsigned int d : bodies[k - 1].force_components)
+              columns.push_back(prefix + "displacement_" + Names::axis(d));
           }
         return columns;
       }
@@ -68,11 +71,19 @@ namespace impm
               {prefix + "slipping",
                label + "s",
                static_cast<double>(forces[k].n_slipping)});
+            const Tensor<1, dim> displacement =
+              context.rigid_contact->displacement_of(k, record.target);
+            for (const unsigned int d : bodies[k].force_components)
+              record.measures.push_back(
+                {prefix + "displacement_" + Names::axis(d),
+                 label + "u" + Names::axis(d),
+                 displacement[d]});
           }
       }
 
     private:
-      const unsigned int n_bodies;
+      const std::vector<RigidBody<dim>> &bodies;
+      const unsigned int                 n_bodies;
     };
   } // namespace
 

@@ -293,6 +293,22 @@ namespace impm
                           body_force.n_contacts,
                           body_force.n_slipping);
             std::cout << buffer;
+            const auto &body = context.rigid_contact->bodies()[k];
+            if (body.force_components.empty())
+              continue;
+            std::cout << "final displacement of " << body.name
+                      << " (force-driven):";
+            for (const unsigned int d : body.force_components)
+              {
+                std::snprintf(buffer,
+                              sizeof(buffer),
+                              " %s %.6f",
+                              Names::axes[d],
+                              context.rigid_contact->pushed_displacement(k)[d] /
+                                length);
+                std::cout << buffer;
+              }
+            std::cout << '\n';
           }
     }
 

@@ -88,6 +88,9 @@ namespace impm
         solver.initialize(request.matrix);
         request.solution = 0.;
         solver.solve(request.solution, request.rhs);
+        for (unsigned int k = 0; k < request.additional_solutions.size(); ++k)
+          solver.solve(*request.additional_solutions[k],
+                       *request.additional_right_hand_sides[k]);
         if (!request.estimate_condition)
           return;
         // |A|_F times a lower bound of |A^-1|_2 from three steps of inverse
@@ -177,25 +180,59 @@ namespace impm
                           static_cast<int>(near_null_space.n_modes));
         ml_parameters.set("null space: vectors", near_null_space.values.data());
         amg.initialize(request.matrix, ml_parameters);
-        const double target =
-          request.relative_tolerance * request.rhs.l2_norm();
+        report.iterations = 0;
+        solve_with(amg,
+                   request.matrix,
+                   request.solution,
+                   request.rhs,
+                   request.relative_tolerance,
+                   report);
+        for (unsigned int k = 0; k < request.additional_solutions.size(); ++k)
+          solve_with(amg,
+                     request.matrix,
+                     *request.additional_solutions[k],
+                     *request.additional_right_hand_sides[k],
+                     request.relative_tolerance,
+                     report);
+      }
+
+      /**
+       * @brief GMRES on one right-hand side @p rhs from zero, to @p
+       * relative_tolerance times its norm; adds its iterations to @p
+       * report, and throws a one-line message if it does not converge.
+       */
+      void
+      solve_with(const TrilinosWrappers::PreconditionAMG &amg,
+                 const TrilinosWrappers::SparseMatrix    &matrix,
+                 TrilinosWrappers::MPI::Vector           &solution,
+                 const TrilinosWrappers::MPI::Vector     &rhs,
+                 const double                             relative_tolerance,
+                 LinearSolveReport                       &report) const
+      {
+        solution = 0.;
+        // A zero right-hand side (the material's residual of a first
+        // iterate in which only a body's force acts) has the solution
+        // zero; GMRES would break down on it.
+        const double rhs_norm = rhs.l2_norm();
+        if (rhs_norm == 0.)
+          return;
+        const double                  target = relative_tolerance * rhs_norm;
         SolverControl                 control(max_iterations, target);
         TrilinosWrappers::SolverGMRES solver(control);
-        request.solution = 0.;
         try
           {
-            solver.solve(request.matrix, request.solution, request.rhs, amg);
+            solver.solve(matrix, solution, rhs, amg);
           }
         catch (const SolverControl::NoConvergence &no_convergence)
           {
-            report.iterations = no_convergence.last_step;
+            report.iterations += no_convergence.last_step;
             std::ostringstream message;
             message << "no convergence in " << no_convergence.last_step
                     << " iterations, residual " << no_convergence.last_residual
                     << " > " << target;
             throw std::runtime_error(message.str());
           }
-        report.iterations = control.last_step();
+        report.iterations += control.last_step();
       }
 
       std::string

@@ -1,6 +1,8 @@
+#include <impm/base/names.h>
 #include <impm/solver/load_step_problem.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace impm
@@ -71,10 +73,16 @@ namespace impm
     if (rigid_contact != nullptr)
       rigid_contact->add_forces(system, displacement_increment, internal_force);
     internal_force.compress(VectorOperation::add);
-    const double norm = system.set_residual(external_force, internal_force);
+    double norm = system.set_residual(external_force, internal_force);
     // Without external loads (a prescribed displacement), the residual is
     // measured against the internal forces, which carry the reactions.
     double reference = external_force_norm;
+    if (has_unknowns())
+      {
+        unknown_residual = rigid_contact->unknown_residuals();
+        norm             = std::hypot(norm, unknown_residual.l2_norm());
+        reference = std::hypot(reference, rigid_contact->applied_force_norm());
+      }
     if (reference == 0.)
       reference = internal_force.l2_norm();
     if (reference == 0.)
@@ -101,6 +109,18 @@ namespace impm
     if (rigid_contact != nullptr)
       rigid_contact->add_matrix(system, system.matrix);
     system.matrix.compress(VectorOperation::add);
+    if (has_unknowns())
+      {
+        std::vector<NodalVector> columns, rows;
+        rigid_contact->add_coupling(system, columns, rows, coupling_corner);
+        coupling_columns.resize(columns.size());
+        coupling_rows.resize(rows.size());
+        for (unsigned int j = 0; j < columns.size(); ++j)
+          {
+            system.copy_to_system(columns[j], coupling_columns[j]);
+            system.copy_to_system(rows[j], coupling_rows[j]);
+          }
+      }
     if (checks_tangent)
       tangent_difference =
         std::max(tangent_difference,
@@ -135,6 +155,14 @@ namespace impm
       values.resize(rows.size());
       for (unsigned int r = 0; r < rows.size(); ++r)
         values[r] = internal_force.local_element(rows[r].second);
+      // Then the unknowns' forces: the residual's change with the sign
+      // turned (the applied force is fixed).
+      if (has_unknowns())
+        {
+          const Vector<double> residuals = rigid_contact->unknown_residuals();
+          for (unsigned int j = 0; j < residuals.size(); ++j)
+            values.push_back(-residuals[j]);
+        }
     };
     // A perturbation small against the cells, large against round-off.
     double cell = std::numeric_limits<double>::max();
@@ -175,14 +203,61 @@ namespace impm
             ++tangent_columns_across_kinks;
             continue;
           }
+        const auto compare = [&](const double entry, const unsigned int r) {
+          const double difference = (plus[r] - minus[r]) / (2. * perturbation);
+          largest_entry           = std::max(largest_entry, std::abs(entry));
+          largest_difference =
+            std::max(largest_difference, std::abs(entry - difference));
+        };
+        for (unsigned int r = 0; r < rows.size(); ++r)
+          compare(system.matrix.el(rows[r].first, column), r);
+        // The unknowns' rows, on the column's owner.
+        if (local != numbers::invalid_unsigned_int)
+          for (unsigned int j = 0; j < coupling_rows.size(); ++j)
+            compare(coupling_rows[j](column), rows.size() + j);
+      }
+    // The unknowns' columns: the bodies move, the DoFs stay.
+    const unsigned int n_unknowns =
+      has_unknowns() ? rigid_contact->unknowns().size() : 0;
+    for (unsigned int j = 0; j < n_unknowns; ++j)
+      {
+        Vector<double> step(n_unknowns);
+        const auto     move = [&](const double amount) {
+          step    = 0.;
+          step(j) = amount;
+          rigid_contact->add_to_unknowns(step);
+        };
+        move(perturbation);
+        internal_force_at(plus);
+        bool across_kink = rigid_contact->state_changed();
+        move(-2. * perturbation);
+        internal_force_at(minus);
+        across_kink = across_kink || rigid_contact->state_changed();
+        move(perturbation);
+        if (across_kink)
+          {
+            ++tangent_columns_across_kinks;
+            continue;
+          }
         for (unsigned int r = 0; r < rows.size(); ++r)
           {
-            const double entry = system.matrix.el(rows[r].first, column);
             const double difference =
               (plus[r] - minus[r]) / (2. * perturbation);
-            largest_entry = std::max(largest_entry, std::abs(entry));
+            const double entry = coupling_columns[j](rows[r].first);
+            largest_entry      = std::max(largest_entry, std::abs(entry));
             largest_difference =
               std::max(largest_difference, std::abs(entry - difference));
+          }
+        for (unsigned int i = 0; i < n_unknowns; ++i)
+          {
+            const unsigned int r = rows.size() + i;
+            const double       difference =
+              (plus[r] - minus[r]) / (2. * perturbation);
+            largest_entry =
+              std::max(largest_entry, std::abs(coupling_corner(i, j)));
+            largest_difference =
+              std::max(largest_difference,
+                       std::abs(coupling_corner(i, j) - difference));
           }
       }
     // Back to the iterate's stresses and forces.
@@ -200,6 +275,8 @@ namespace impm
   LoadStepProblem<dim>::solve_and_update(const double relative_tolerance,
                                          const bool   estimate_condition)
   {
+    if (has_unknowns())
+      return solve_bordered(relative_tolerance, estimate_condition);
     TimerOutput::Scope      scope(timer, "linear solve");
     const LinearSolveReport report = linear_solver.solve({system.matrix,
                                                           system.solution,
@@ -208,6 +285,74 @@ namespace impm
                                                           estimate_condition});
     if (report.success)
       system.add_solution_to(displacement_increment);
+    return report;
+  }
+
+
+
+  template <int dim>
+  LinearSolveReport
+  LoadStepProblem<dim>::solve_bordered(const double relative_tolerance,
+                                       const bool   estimate_condition)
+  {
+    TimerOutput::Scope scope(timer, "linear solve");
+    const auto        &unknowns = rigid_contact->unknowns();
+    const unsigned int m        = unknowns.size();
+    // A body no material touches in a force-driven component: nothing
+    // balances its force.
+    for (unsigned int j = 0; j < m; ++j)
+      if (!(coupling_corner(j, j) > 0.))
+        {
+          LinearSolveReport report;
+          report.success = false;
+          report.failure =
+            rigid_contact->bodies()[unknowns[j].body].name +
+            " is pushed by its force in " + Names::axis(unknowns[j].component) +
+            " but touches no material there: nothing balances the force "
+            "(place the body on the material)";
+          return report;
+        }
+    std::vector<TrilinosWrappers::MPI::Vector> responses(
+      m, TrilinosWrappers::MPI::Vector(system.rhs));
+    LinearSolveRequest request{system.matrix,
+                               system.solution,
+                               system.rhs,
+                               relative_tolerance,
+                               estimate_condition};
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        request.additional_right_hand_sides.push_back(&coupling_columns[j]);
+        request.additional_solutions.push_back(&responses[j]);
+      }
+    LinearSolveReport report = linear_solver.solve(request);
+    if (!report.success)
+      return report;
+    // The Schur complement of the DoFs' block, and the unknowns.
+    FullMatrix<double> schur(coupling_corner);
+    Vector<double>     rhs(unknown_residual);
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        for (unsigned int j = 0; j < m; ++j)
+          schur(i, j) -= coupling_rows[i] * responses[j];
+        rhs(i) -= coupling_rows[i] * system.solution;
+      }
+    FullMatrix<double> inverse(m, m);
+    inverse.invert(schur);
+    Vector<double> correction(m);
+    inverse.vmult(correction, rhs);
+    for (unsigned int j = 0; j < m; ++j)
+      if (!std::isfinite(correction(j)))
+        {
+          report.success = false;
+          report.failure = "the rigid bodies' unknowns: a singular Schur "
+                           "complement (a body pushed by a force that the "
+                           "material does not hold)";
+          return report;
+        }
+    for (unsigned int j = 0; j < m; ++j)
+      system.solution.add(-correction(j), responses[j]);
+    system.add_solution_to(displacement_increment);
+    rigid_contact->add_to_unknowns(correction);
     return report;
   }
 
@@ -230,8 +375,11 @@ namespace impm
         for (unsigned int d = 0; d < dim; ++d)
           largest = std::max(largest, std::abs(displacement[d]) / cell_size[d]);
       }
-    return Utilities::MPI::max(largest,
-                               grid.get_triangulation().get_communicator());
+    largest =
+      Utilities::MPI::max(largest, grid.get_triangulation().get_communicator());
+    if (has_unknowns())
+      largest = std::max(largest, rigid_contact->max_unknown_increment());
+    return largest;
   }
 
 

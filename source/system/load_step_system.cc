@@ -355,10 +355,36 @@ namespace impm
   void
   LoadStepSystem<dim>::add_solution_to(NodalVector &increment) const
   {
+    add_to_nodal(solution, increment);
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepSystem<dim>::copy_to_system(
+    const NodalVector             &nodal,
+    TrilinosWrappers::MPI::Vector &system_vector) const
+  {
+    system_vector.reinit(rhs);
     for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
       if (index_in_system[i] != numbers::invalid_dof_index)
-        increment.local_element(i) += solution[index_in_system[i]];
-    increment.update_ghost_values();
+        system_vector[index_in_system[i]] = nodal.local_element(i);
+    system_vector.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepSystem<dim>::add_to_nodal(
+    const TrilinosWrappers::MPI::Vector &system_vector,
+    NodalVector                         &nodal) const
+  {
+    for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
+      if (index_in_system[i] != numbers::invalid_dof_index)
+        nodal.local_element(i) += system_vector[index_in_system[i]];
+    nodal.update_ghost_values();
   }
 
 

@@ -8,6 +8,7 @@
 #include <impm/contact/triangulated_surface.h>
 #include <impm/core/body.h>
 
+#include <algorithm>
 #include <limits>
 #include <memory>
 #include <string>
@@ -145,6 +146,14 @@ namespace impm
       return load_factor * displacement;
     }
 
+    /** @brief Whether component @p d is pushed by the force. */
+    bool
+    is_force_driven(const unsigned int d) const
+    {
+      return std::find(force_components.begin(), force_components.end(), d) !=
+             force_components.end();
+    }
+
     /**
      * @brief The smallest box holding the body displaced by @p displacement.
      */
@@ -223,6 +232,12 @@ namespace impm
     std::string surface_file;
     /** Displacement at load factor 1. */
     Tensor<1, dim> displacement;
+    /** The components in which the body is pushed by @p force (its
+     *  displacement there an unknown), in increasing order. */
+    std::vector<unsigned int> force_components;
+    /** Force on the body at load factor 1 (zero but on
+     *  force_components). */
+    Tensor<1, dim> force;
     /** The friction law. */
     Friction friction = Friction::frictionless;
     /** Coulomb friction coefficient. */
@@ -242,6 +257,11 @@ namespace impm
      *  radius, Shaft length) into @p cone. */
     void
     parse_cone(ParameterHandler &prm);
+
+    /** @brief Read 'Force-driven components' and 'Force' (after
+     *  'Displacement'). */
+    void
+    parse_force(ParameterHandler &prm);
   };
 } // namespace impm
 

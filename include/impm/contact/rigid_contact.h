@@ -4,10 +4,13 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <impm/contact/rigid_body.h>
 #include <impm/grid/background_grid.h>
+#include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
 
 #include <array>
@@ -39,6 +42,15 @@ namespace impm
    * on the material as a load that depends on the displacement: it is
    * added to the internal force with the opposite sign, and its derivative
    * to the matrix, so Testing/Check tangent checks both.
+   *
+   * A body pushed by a force (RigidBody::force_components) has its
+   * displacement in those components as unknowns of the Newton solve
+   * (unknowns()): their equation is the balance of the applied force with
+   * the material's contact force on the body, and since every probe's
+   * force depends on the face's position minus the body's displacement,
+   * the derivatives with respect to the body follow from those with
+   * respect to the face (add_coupling()). LoadStepProblem solves the
+   * bordered system.
    *
    * A converged step stores each face's friction traction in the point
    * (PointLayout::contact_traction, only in scenes with friction) and sums
@@ -110,6 +122,94 @@ namespace impm
     add_forces(const LoadStepSystem<dim> &system,
                const NodalVector         &increment,
                NodalVector               &internal_force);
+
+    /** @brief An unknown of the bodies: a force-driven component. */
+    struct Unknown
+    {
+      /** Index of the rigid body. */
+      unsigned int body;
+      /** The component of its displacement. */
+      unsigned int component;
+    };
+
+    /** @brief The unknowns of the bodies (empty: every body's motion is
+     *  prescribed), body by body. */
+    const std::vector<Unknown> &
+    unknowns() const
+    {
+      return body_unknowns;
+    }
+
+    /**
+     * @brief The residual of each unknown at the last add_forces(): the
+     * applied force at the attempt's target minus the force of the
+     * contact on the material, summed over the body (N). Collective.
+     */
+    Vector<double>
+    unknown_residuals() const;
+
+    /**
+     * @brief The norm of the applied forces on the unknowns at the
+     * attempt's target (N).
+     */
+    double
+    applied_force_norm() const;
+
+    /**
+     * @brief The blocks of the system matrix that couple the unknowns
+     * with the displacement DoFs, at the last add_forces(): per unknown
+     * j, the column @p columns[j] (the derivative of the internal force
+     * with respect to it) and the row @p rows[j] (the derivative of its
+     * residual's force with respect to the DoFs), in full numbering, and
+     * @p corner, the derivative of the unknowns' forces with respect to
+     * the unknowns. The vectors are compressed; @p corner is summed over
+     * the processes. Collective.
+     */
+    void
+    add_coupling(const LoadStepSystem<dim> &system,
+                 std::vector<NodalVector>  &columns,
+                 std::vector<NodalVector>  &rows,
+                 FullMatrix<double>        &corner) const;
+
+    /**
+     * @brief Add @p correction (one entry per unknown, the same on every
+     * process) to the bodies' displacements.
+     */
+    void
+    add_to_unknowns(const Vector<double> &correction);
+
+    /**
+     * @brief The largest change of an unknown over the attempt, in cells
+     * of its direction (0 without unknowns).
+     */
+    double
+    max_unknown_increment() const;
+
+    /**
+     * @brief The displacement of body @p k at load factor @p load_factor
+     * when that was the last accepted step's (for output): the prescribed
+     * part and, on the force-driven components, the accepted unknowns.
+     */
+    Tensor<1, dim>
+    displacement_of(const unsigned int k, const double load_factor) const;
+
+    /** @brief The displacement of body @p k on its force-driven
+     *  components at the last accepted step (zero on the others). */
+    const Tensor<1, dim> &
+    pushed_displacement(const unsigned int k) const
+    {
+      return accepted_unknowns[k];
+    }
+
+    /** @brief Store the accepted unknowns in @p state (scenes with
+     *  unknowns). */
+    void
+    save(RunState &state) const;
+
+    /** @brief Read the accepted unknowns from @p state (scenes with
+     *  unknowns). */
+    void
+    load(const RunState &state);
 
     /**
      * @brief Whether, on any process, a probe changed its state (into or
@@ -222,9 +322,21 @@ namespace impm
     const bool friction;
     /** max_face_points() and traction_entries() of the bodies. */
     const unsigned int probes_per_face, n_traction_entries;
-    /** The bodies' displacement at the attempt's target, and its change
-     *  over the attempt. */
-    std::vector<Tensor<1, dim>> displacement, displacement_increment;
+    /** The bodies' force-driven components (body by body). */
+    const std::vector<Unknown> body_unknowns;
+    /** The bodies' displacement at the attempt's target (on the
+     *  force-driven components: the current iterate), at its start, and
+     *  the change over the attempt. */
+    std::vector<Tensor<1, dim>> displacement, start_displacement,
+      displacement_increment;
+    /** The bodies' displacement at the last accepted step on the
+     *  force-driven components (zero on the others). */
+    std::vector<Tensor<1, dim>> accepted_unknowns;
+    /** The applied force on each body at the attempt's target. */
+    std::vector<Tensor<1, dim>> applied_force;
+    /** This process's part of the contact's force on the material, per
+     *  body, at the last add_forces(). */
+    std::vector<Tensor<1, dim>> force_on_material;
     std::vector<Probe>          probes;
     std::vector<BodyForce>      forces_on_bodies;
   };

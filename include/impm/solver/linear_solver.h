@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace impm
 {
@@ -43,6 +44,14 @@ namespace impm
     double relative_tolerance;
     /** Also estimate the matrix's condition number, where the solver can. */
     bool estimate_condition;
+    /** More right-hand sides with the same matrix, solved into @p
+     *  additional_solutions (as many, of the same partition) with the
+     *  factorisation or preconditioner of the first: the bordered systems
+     *  of rigid bodies pushed by a force. */
+    std::vector<const TrilinosWrappers::MPI::Vector *>
+      additional_right_hand_sides = {};
+    /** Where the additional right-hand sides' solutions go. */
+    std::vector<TrilinosWrappers::MPI::Vector *> additional_solutions = {};
   };
 
   /**

@@ -4,6 +4,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
 #include <impm/assembly/assembler.h>
 #include <impm/assembly/ghost_stabilisation.h>
 #include <impm/contact/rigid_contact.h>
@@ -19,7 +22,10 @@ namespace impm
   /**
    * @brief The equilibrium of one load step as a NonlinearProblem: the
    * displacement increment from the start of the step is the unknown, the
-   * residual is f_ext - f_int on the DoFs of the linear system.
+   * residual is f_ext - f_int on the DoFs of the linear system. Rigid
+   * bodies pushed by a force add their displacement components as
+   * unknowns, with the balance of their forces as equations (a bordered
+   * system, solve_bordered()).
    *
    * It owns the nodal vectors of the step and times its phases ("stress
    * update", "assembly", "linear solve") in the solver's TimerOutput.
@@ -128,6 +134,13 @@ namespace impm
     }
 
   private:
+    /** @brief Whether rigid bodies pushed by a force add unknowns. */
+    bool
+    has_unknowns() const
+    {
+      return rigid_contact != nullptr && !rigid_contact->unknowns().empty();
+    }
+
     const BackgroundGrid<dim>     &grid;
     LoadStepSystem<dim>           &system;
     Assembler<dim>                &assembler;
@@ -155,6 +168,28 @@ namespace impm
      */
     double
     tangent_difference_by_central_differences();
+
+    /** The residual of the rigid bodies' unknowns (RigidContact::
+     *  unknowns()) at the current iterate. */
+    Vector<double> unknown_residual;
+    /** The matrix's blocks that couple the bodies' unknowns with the
+     *  DoFs (in the system's numbering) and with each other, at the last
+     *  assemble_matrix(). */
+    std::vector<TrilinosWrappers::MPI::Vector> coupling_columns, coupling_rows;
+    FullMatrix<double>                         coupling_corner;
+
+    /**
+     * @brief The Newton correction of the bordered system of the DoFs and
+     * the bodies' unknowns, by block elimination: with the displacement
+     * block K, the coupling columns B, rows C and corner D, solve K Y = B
+     * and K z = r with one factorisation (or preconditioner), then the
+     * unknowns from (D - C Y) dw = r_w - C z, and du = z - Y dw. A body
+     * that touches no material (a zero corner) fails the solve with a
+     * line naming it.
+     */
+    LinearSolveReport
+    solve_bordered(const double relative_tolerance,
+                   const bool   estimate_condition);
 
     /** Whether assemble_matrix() checks its matrix. */
     bool checks_tangent = false;

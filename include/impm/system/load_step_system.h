@@ -154,6 +154,23 @@ namespace impm
     void
     add_solution_to(NodalVector &increment) const;
 
+    /**
+     * @brief Copy @p nodal (compressed) on the system's DoFs into @p
+     * system_vector (a vector of the system's partition, as rhs).
+     * Collective.
+     */
+    void
+    copy_to_system(const NodalVector             &nodal,
+                   TrilinosWrappers::MPI::Vector &system_vector) const;
+
+    /**
+     * @brief Add @p system_vector to @p nodal on the system's DoFs and
+     * update its ghosts. Collective.
+     */
+    void
+    add_to_nodal(const TrilinosWrappers::MPI::Vector &system_vector,
+                 NodalVector                         &nodal) const;
+
     /** @brief The system matrix. */
     TrilinosWrappers::SparseMatrix matrix;
     /** @brief The right-hand side (the residual). */
