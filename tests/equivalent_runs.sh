@@ -23,6 +23,17 @@
 #     sqrt(2 J2) = sqrt(2/3) (sigma_1 - sigma_3), so c = rho_y sqrt(3/2) / 2
 #     = 12247.4487139159 yields at the same stress and the edge return
 #     flows along the same direction; the column prints the same summary.
+#  7. A rigid body's prescribed rotation where the shape does not care:
+#     the frictionless disc of contact_tangent_disc turned by 90 degrees
+#     about its centre, and the cone of contact_cone_quarter turned by 120
+#     degrees about its axis, print what they print unturned (every
+#     proximity goes through the body's frame: c + R^T (x - c - d), the
+#     normal turned back);
+#  8. a turning box in 3D becomes a surface of 12 triangles probed at 3 x 3
+#     Gauss points per face: the plate of contact_plate_compression_3d,
+#     widened to [-1.25, 2.75]^2 so that it covers the block at every
+#     angle, turned by 90 degrees about z prints what it prints unturned
+#     but the probes in contact (576 = 9 x 64, as contact_plate_stl_3d).
 # Values are compared with numdiff at the suite's tolerances.
 # Usage: equivalent_runs.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
 tests=$2
@@ -81,4 +92,29 @@ compare collapse_dp.txt collapse_h1_4steps.txt \
   > column_tresca.txt 2> /dev/null || fail "the Tresca column failed"
 compare column_tresca.txt column_gimp_plastic_16.txt \
   "Tresca differs from von Mises on the column's triaxial states"
-echo "equivalent_runs: the six pairs of runs agree"
+frictionless=(--set "Rigid body 1/Friction=frictionless" --set "Testing/Check tangent=false")
+"${launcher[@]}" "$impm" "$tests/contact_tangent_disc.prm" --overwrite "${frictionless[@]}" \
+  > disc.txt 2> /dev/null || fail "the disc did not run"
+"${launcher[@]}" "$impm" "$tests/contact_tangent_disc.prm" --overwrite "${frictionless[@]}" \
+  --set "Rigid body 1/Rotation=90" > disc_turned.txt 2> /dev/null || fail "the turning disc did not run"
+compare disc_turned.txt disc.txt "a frictionless disc turning about its centre changes the run"
+cone=(--set "Testing/Check tangent=false")
+"${launcher[@]}" "$impm" "$tests/contact_cone_quarter.prm" --overwrite "${cone[@]}" \
+  > cone.txt 2> /dev/null || fail "the cone did not run"
+"${launcher[@]}" "$impm" "$tests/contact_cone_quarter.prm" --overwrite "${cone[@]}" \
+  --set "Rigid body 1/Rotation=120" --set "Rigid body 1/Rotation axis=0, 0, 1" \
+  --set "Rigid body 1/Rotation centre=0, 0, 1" > cone_turned.txt 2> /dev/null ||
+  fail "the turning cone did not run"
+compare cone_turned.txt cone.txt "a frictionless cone turning about its axis changes the run"
+plate=(--set "Rigid body 1/Lower corner=-1.25, -1.25, 1"
+       --set "Rigid body 1/Upper corner=2.75, 2.75, 1.25" --set "Testing/Check tangent=false")
+"${launcher[@]}" "$impm" "$tests/contact_plate_compression_3d.prm" --overwrite "${plate[@]}" \
+  > plate.txt 2> /dev/null || fail "the wide plate did not run"
+"${launcher[@]}" "$impm" "$tests/contact_plate_compression_3d.prm" --overwrite "${plate[@]}" \
+  --set "Rigid body 1/Rotation=90" --set "Rigid body 1/Rotation axis=0, 0, 1" \
+  > plate_turned.txt 2> /dev/null || fail "the turning plate did not run"
+grep -q "576 probes in contact" plate_turned.txt || fail "the turning plate is not probed at 9 Gauss points per face"
+sed -e 's/R1c [0-9.e+]*//' -e 's/[0-9]* probes in contact//' plate.txt > plate_unprobed.txt
+sed -e 's/R1c [0-9.e+]*//' -e 's/[0-9]* probes in contact//' plate_turned.txt > plate_turned_unprobed.txt
+compare plate_turned_unprobed.txt plate_unprobed.txt "the turning 3D plate differs from the unturned one"
+echo "equivalent_runs: the nine pairs of runs agree"

@@ -123,6 +123,30 @@ namespace impm
                           "component per dimension, in m; ramped with the "
                           "load factor like every load. Zero on the "
                           "'Force-driven components'.");
+        prm.declare_entry("Rotation",
+                          "0",
+                          Patterns::Double(-360., 360.),
+                          "The angle the body turns by at the full load, "
+                          "in degrees, ramped with the load factor like "
+                          "'Displacement' (-360 to 360; 0: it does not "
+                          "turn): counter-clockwise about z in 2D, "
+                          "right-handed about 'Rotation axis' in 3D, about "
+                          "'Rotation centre' moving with the displacement. "
+                          "A turning box is probed like a polygon (2D) or "
+                          "a triangulated surface (3D), at 'Face quadrature "
+                          "points'.");
+        prm.declare_entry("Rotation axis",
+                          "0, 0, 1",
+                          Patterns::List(Patterns::Double(), 3, 3),
+                          "3D: the direction of the rotation's axis (any "
+                          "length > 0).");
+        prm.declare_entry("Rotation centre",
+                          "",
+                          Patterns::List(Patterns::Double(), 0, 3),
+                          "The point the body turns about, before its "
+                          "displacement, one coordinate per dimension "
+                          "(empty: the centre of the body's bounding "
+                          "box).");
         prm.declare_entry(
           "Force-driven components",
           "",
@@ -229,6 +253,7 @@ namespace impm
     for (unsigned int d = 0; d < dim; ++d)
       displacement[d] = values[d];
     parse_force(prm);
+    parse_rotation(prm);
     friction             = static_cast<Friction>(Parameters::selection_index(
       friction_names, name + "/Friction", prm.get("Friction")));
     friction_coefficient = prm.get_double("Friction coefficient");
@@ -297,6 +322,176 @@ namespace impm
                                   Names::axis(d) +
                                   " is one: 'Force' drives it).");
       }
+  }
+
+
+
+  template <int dim>
+  void
+  RigidBody<dim>::parse_rotation(ParameterHandler &prm)
+  {
+    rotation_angle = prm.get_double("Rotation") * numbers::PI / 180.;
+    const auto box = bounding_box(Tensor<1, dim>());
+    for (unsigned int d = 0; d < dim; ++d)
+      rotation_centre[d] = 0.5 * (box.first[d] + box.second[d]);
+    const auto centre =
+      Parameters::get_optional_vector(prm, name, "Rotation centre", dim);
+    for (unsigned int d = 0; d < centre.size(); ++d)
+      rotation_centre[d] = centre[d];
+    if (!rotates())
+      return;
+    if constexpr (dim == 3)
+      {
+        const auto axis =
+          Parameters::get_vector(prm, name, "Rotation axis", dim);
+        for (unsigned int d = 0; d < dim; ++d)
+          rotation_axis[d] = axis[d];
+        if (!(rotation_axis.norm() > 0.))
+          Parameters::bad_value(name + "/Rotation axis",
+                                prm.get("Rotation axis"),
+                                "the direction needs a length > 0.");
+        rotation_axis /= rotation_axis.norm();
+      }
+    using Shape = typename Body<dim>::Shape;
+    if (is_cone || surface_mesh || outline.shape != Shape::box)
+      return;
+    // A box's exact face overlap is for faces parallel to its sides: a
+    // turning box is a polygon or a surface of triangles instead.
+    const Point<dim>       &a = outline.lower_corner, &b = outline.upper_corner;
+    std::vector<Point<dim>> corners;
+    for (unsigned int k = 0; k < (1u << dim); ++k)
+      {
+        Point<dim> corner;
+        for (unsigned int d = 0; d < dim; ++d)
+          corner[d] = (k >> d) & 1 ? b[d] : a[d];
+        corners.push_back(corner);
+      }
+    if constexpr (dim == 2)
+      {
+        outline.shape    = Shape::polygon;
+        outline.vertices = {corners[0], corners[1], corners[3], corners[2]};
+      }
+    else
+      {
+        // The sides as quadrilaterals (all ordered alike), two triangles
+        // each.
+        const std::vector<std::array<unsigned int, 4>> sides = {{{0, 2, 6, 4}},
+                                                                {{1, 5, 7, 3}},
+                                                                {{0, 4, 5, 1}},
+                                                                {{2, 3, 7, 6}},
+                                                                {{0, 1, 3, 2}},
+                                                                {{4, 6, 7, 5}}};
+        std::vector<std::array<unsigned int, 3>>       triangles;
+        for (const auto &side : sides)
+          {
+            triangles.push_back({{side[0], side[1], side[2]}});
+            triangles.push_back({{side[0], side[2], side[3]}});
+          }
+        surface_mesh =
+          std::make_shared<const TriangulatedSurface>(corners, triangles);
+        surface_file = "turning box";
+      }
+  }
+
+
+
+  template <int dim>
+  Tensor<2, dim>
+  RigidBody<dim>::rotation_at(const double load_factor) const
+  {
+    Tensor<2, dim> rotation = unit_symmetric_tensor<dim>();
+    if (!rotates())
+      return rotation;
+    const double angle = load_factor * rotation_angle;
+    const double c = std::cos(angle), s = std::sin(angle);
+    if constexpr (dim == 2)
+      {
+        rotation[0][0] = c;
+        rotation[0][1] = -s;
+        rotation[1][0] = s;
+        rotation[1][1] = c;
+      }
+    else
+      {
+        // Rodrigues: R = c I + s [a]x + (1 - c) a a.
+        const Tensor<1, dim> &a = rotation_axis;
+        rotation                = c * rotation + (1. - c) * outer_product(a, a);
+        rotation[0][1] -= s * a[2];
+        rotation[0][2] += s * a[1];
+        rotation[1][0] += s * a[2];
+        rotation[1][2] -= s * a[0];
+        rotation[2][0] -= s * a[1];
+        rotation[2][1] += s * a[0];
+      }
+    return rotation;
+  }
+
+
+
+  template <int dim>
+  typename RigidBody<dim>::Proximity
+  RigidBody<dim>::proximity(const Point<dim>     &x,
+                            const Tensor<1, dim> &body_displacement,
+                            const Tensor<2, dim> &rotation,
+                            const Facing         *facing) const
+  {
+    if (!rotates())
+      return proximity(x, body_displacement, facing);
+    Proximity result = proximity(to_body_frame(x, body_displacement, rotation),
+                                 Tensor<1, dim>(),
+                                 facing);
+    result.normal    = rotation * result.normal;
+    result.normal_derivative =
+      rotation * result.normal_derivative * transpose(rotation);
+    result.overlap_gradient = rotation * result.overlap_gradient;
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::pair<Point<dim>, Point<dim>>
+  RigidBody<dim>::bounding_box(const Tensor<1, dim> &body_displacement,
+                               const double          load_factor) const
+  {
+    if (!rotates())
+      return bounding_box(body_displacement);
+    const auto                        box      = bounding_box(Tensor<1, dim>());
+    const Tensor<2, dim>              rotation = rotation_at(load_factor);
+    std::pair<Point<dim>, Point<dim>> turned;
+    for (unsigned int k = 0; k < (1u << dim); ++k)
+      {
+        Point<dim> corner;
+        for (unsigned int d = 0; d < dim; ++d)
+          corner[d] = (k >> d) & 1 ? box.second[d] : box.first[d];
+        const Point<dim> moved = rotation_centre + body_displacement +
+                                 rotation * (corner - rotation_centre);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            turned.first[d] =
+              k == 0 ? moved[d] : std::min(turned.first[d], moved[d]);
+            turned.second[d] =
+              k == 0 ? moved[d] : std::max(turned.second[d], moved[d]);
+          }
+      }
+    return turned;
+  }
+
+
+
+  template <int dim>
+  typename RigidBody<dim>::Surface
+  RigidBody<dim>::surface(const Tensor<1, dim> &body_displacement,
+                          const double          load_factor) const
+  {
+    if (!rotates())
+      return surface(body_displacement);
+    Surface              result   = surface(Tensor<1, dim>());
+    const Tensor<2, dim> rotation = rotation_at(load_factor);
+    for (auto &vertex : result.vertices)
+      vertex = rotation_centre + body_displacement +
+               rotation * (vertex - rotation_centre);
+    return result;
   }
 
 
@@ -734,6 +929,13 @@ namespace impm
     else
       out << outline.shape_description();
     out << ", moved by [" << displacement << "]";
+    if (rotates())
+      {
+        out << ", turned by " << rotation_angle * 180. / numbers::PI
+            << " degrees about (" << rotation_centre << ")";
+        if (dim == 3)
+          out << " axis (" << rotation_axis << ")";
+      }
     if (!force_components.empty())
       {
         out << " but pushed by [" << force << "] in";

@@ -42,6 +42,9 @@ namespace impm
     , displacement(rigid_bodies.size())
     , start_displacement(rigid_bodies.size())
     , displacement_increment(rigid_bodies.size())
+    , rotation(rigid_bodies.size())
+    , start_rotation(rigid_bodies.size())
+    , rotation_increment(rigid_bodies.size())
     , accepted_unknowns(rigid_bodies.size())
     , applied_force(rigid_bodies.size())
     , force_on_material(rigid_bodies.size())
@@ -184,10 +187,13 @@ namespace impm
         displacement[b] = body.displacement_at(target) + accepted_unknowns[b];
         displacement_increment[b] = displacement[b] - start_displacement[b];
         applied_force[b]          = target * body.force;
+        rotation[b]               = body.rotation_at(target);
+        start_rotation[b]         = body.rotation_at(start);
+        rotation_increment[b]     = rotation[b] * transpose(start_rotation[b]);
         const double margin =
           (body.force_components.empty() ? 1. : 2.) * largest_cell;
-        auto       box   = body.bounding_box(displacement[b]);
-        const auto other = body.bounding_box(start_displacement[b]);
+        auto       box   = body.bounding_box(displacement[b], target);
+        const auto other = body.bounding_box(start_displacement[b], start);
         for (unsigned int d = 0; d < dim; ++d)
           {
             box.first[d]  = std::min(box.first[d], other.first[d]) - margin;
@@ -222,10 +228,13 @@ namespace impm
                   continue;
                 const RigidBody<dim> &body = rigid_bodies[b];
                 Probe                 probe;
-                probe.point               = p;
-                probe.body                = b;
-                probe.facing.normal       = Tensor<1, dim>();
-                probe.facing.normal[axis] = sign;
+                probe.point             = p;
+                probe.body              = b;
+                probe.face_normal       = Tensor<1, dim>();
+                probe.face_normal[axis] = sign;
+                probe.facing.normal =
+                  body.rotates() ? transpose(rotation[b]) * probe.face_normal :
+                                   probe.face_normal;
                 // The penalty lets a face in by p h / (alpha E), less than
                 // h / alpha for any pressure below E.
                 probe.facing.tolerance   = smallest_cell / body.penalty_factor;
@@ -265,8 +274,12 @@ namespace impm
                         }
                     probe.slot           = face * probes_per_face + k;
                     probe.start_position = at;
-                    probe.facing.start   = at - start_displacement[b];
-                    probe.area           = weight * face_area;
+                    probe.facing.start =
+                      body.rotates() ? body.to_body_frame(at,
+                                                          start_displacement[b],
+                                                          start_rotation[b]) :
+                                       at - start_displacement[b];
+                    probe.area = weight * face_area;
                     if (traction_index != PointLayout::absent)
                       for (unsigned int d = 0; d < dim; ++d)
                         probe.previous_traction[d] =
@@ -285,14 +298,16 @@ namespace impm
   void
   RigidContact<dim>::evaluate(Probe &probe, const Point<dim> &position) const
   {
-    const RigidBody<dim> &body = rigid_bodies[probe.body];
-    const auto            proximity =
-      body.proximity(position, displacement[probe.body], &probe.facing);
-    const Tensor<1, dim> &n = proximity.normal;
-    const Tensor<2, dim> &H = proximity.normal_derivative;
+    const RigidBody<dim> &body      = rigid_bodies[probe.body];
+    const auto            proximity = body.proximity(position,
+                                          displacement[probe.body],
+                                          rotation[probe.body],
+                                          &probe.facing);
+    const Tensor<1, dim> &n         = proximity.normal;
+    const Tensor<2, dim> &H         = proximity.normal_derivative;
     // The face's share of the body's surface: its area projected on the
     // tangent plane.
-    const double c = -(probe.facing.normal * n);
+    const double c = -(probe.face_normal * n);
     probe.active   = proximity.gap <= 0. && c > 0.;
     probe.slipping = false;
     probe.piece    = probe.active ? proximity.piece : 0;
@@ -309,7 +324,7 @@ namespace impm
     const double          pressure = -k * proximity.gap;
     const double          w        = proximity.overlap;
     const Tensor<1, dim> &dw       = proximity.overlap_gradient;
-    const Tensor<1, dim>  dc       = -(H * probe.facing.normal);
+    const Tensor<1, dim>  dc       = -(H * probe.face_normal);
     const Tensor<2, dim>  identity = unit_symmetric_tensor<dim>();
     // The pressure on the part w of the face's area projected on the
     // tangent plane, A c w.
@@ -326,10 +341,24 @@ namespace impm
       return;
     // Trial traction: the traction of the step before and the slip of the
     // face against the body in this step, on the tangent plane.
-    const Tensor<1, dim> slip =
-      (position - probe.start_position) - displacement_increment[probe.body];
+    // A turning body carries the traction of the step before along, and
+    // the slip is the face's motion relative to the body's material:
+    // (x - c - d) - dR (x^n - c - d^n), dR the rotation over the step
+    // (derivative I).
+    Tensor<1, dim> slip, previous_traction = probe.previous_traction;
+    if (body.rotates())
+      {
+        const Tensor<2, dim> &turn = rotation_increment[probe.body];
+        slip = (position - body.rotation_centre - displacement[probe.body]) -
+               turn * (probe.start_position - body.rotation_centre -
+                       start_displacement[probe.body]);
+        previous_traction = turn * previous_traction;
+      }
+    else
+      slip =
+        (position - probe.start_position) - displacement_increment[probe.body];
     const double         kt         = probe.tangential_stiffness;
-    const Tensor<1, dim> v          = probe.previous_traction + kt * slip;
+    const Tensor<1, dim> v          = previous_traction + kt * slip;
     const Tensor<2, dim> projection = identity - outer_product(n, n);
     const Tensor<1, dim> trial      = projection * v;
     const Tensor<2, dim> d_trial =

@@ -107,7 +107,8 @@ namespace impm
         for (unsigned int k = 0; k < bodies.size(); ++k)
           {
             const auto surface =
-              bodies[k].surface(contact.displacement_of(k, load_factor));
+              bodies[k].surface(contact.displacement_of(k, load_factor),
+                                load_factor);
             const std::string file =
               "rigid_" + std::to_string(k + 1) + suffix + ".vtu";
             write_file_atomically(directory + "/" + file,

@@ -23,9 +23,12 @@ namespace impm
    * @brief A rigid body of a scene: a shape (box, disc, sphere or polygon,
    * as a Body's, or in 3D a cone on a cylindrical shaft, a penetrometer,
    * or a closed triangulated surface read from an STL file)
-   * that moves through the grid by a prescribed displacement,
-   * ramped with the load factor, and touches the material points with a
-   * penalty contact and Coulomb friction (RigidContact).
+   * that moves through the grid by a prescribed displacement and
+   * optionally a rotation about a centre, both ramped with the load
+   * factor (or, on its force-driven components, pushed by a force, its
+   * displacement there an unknown of RigidContact), and touches the
+   * material points with a penalty contact and Coulomb friction
+   * (RigidContact).
    *
    * It knows its geometry: the signed distance of a point from its surface
    * (negative inside), the outward normal of the nearest surface point and
@@ -138,7 +141,50 @@ namespace impm
               const Facing         *facing = nullptr) const;
 
     /**
-     * @brief The body's displacement at load factor @p load_factor.
+     * @brief The proximity of @p x to the body displaced by @p displacement
+     * and turned by @p rotation about its displaced 'Rotation centre': the
+     * proximity of the point x maps to in the body's frame, c + R^T (x - c
+     * - d), turned back (the normal R n, its derivative R H R^T). @p
+     * facing is in the body's frame (its normal R^T n_f, its start mapped
+     * with the start's pose).
+     */
+    Proximity
+    proximity(const Point<dim>     &x,
+              const Tensor<1, dim> &displacement,
+              const Tensor<2, dim> &rotation,
+              const Facing         *facing) const;
+
+    /** @brief Whether the body turns ('Rotation' is not zero). */
+    bool
+    rotates() const
+    {
+      return rotation_angle != 0.;
+    }
+
+    /**
+     * @brief The body's rotation at load factor @p load_factor: the angle
+     * 'Rotation' times the load factor, about z in 2D (counter-clockwise)
+     * or about 'Rotation axis' in 3D (right-handed).
+     */
+    Tensor<2, dim>
+    rotation_at(const double load_factor) const;
+
+    /**
+     * @brief Where @p x lies in the body's frame when the body is displaced
+     * by @p displacement and turned by @p rotation: c + R^T (x - c - d).
+     */
+    Point<dim>
+    to_body_frame(const Point<dim>     &x,
+                  const Tensor<1, dim> &displacement,
+                  const Tensor<2, dim> &rotation) const
+    {
+      return rotation_centre +
+             transpose(rotation) * (x - rotation_centre - displacement);
+    }
+
+    /**
+     * @brief The body's displacement at load factor @p load_factor (on
+     * force-driven components zero: there it is an unknown).
      */
     Tensor<1, dim>
     displacement_at(const double load_factor) const
@@ -160,6 +206,14 @@ namespace impm
     std::pair<Point<dim>, Point<dim>>
     bounding_box(const Tensor<1, dim> &displacement) const;
 
+    /**
+     * @brief A box holding the body displaced by @p displacement and turned
+     * by its rotation at @p load_factor (the turned corners of its box).
+     */
+    std::pair<Point<dim>, Point<dim>>
+    bounding_box(const Tensor<1, dim> &displacement,
+                 const double          load_factor) const;
+
     /** @brief The body's surface as polygons, for ParaView. */
     struct Surface
     {
@@ -177,6 +231,13 @@ namespace impm
      */
     Surface
     surface(const Tensor<1, dim> &displacement) const;
+
+    /**
+     * @brief The surface of the body displaced by @p displacement and
+     * turned by its rotation at @p load_factor.
+     */
+    Surface
+    surface(const Tensor<1, dim> &displacement, const double load_factor) const;
 
     /**
      * @brief The Gauss points per direction along a face of a point's
@@ -238,6 +299,12 @@ namespace impm
     /** Force on the body at load factor 1 (zero but on
      *  force_components). */
     Tensor<1, dim> force;
+    /** The angle turned at load factor 1, in radians (0: none). */
+    double rotation_angle = 0.;
+    /** The axis of the rotation (3D; unit length). */
+    Tensor<1, dim> rotation_axis;
+    /** The point the body turns about, before its displacement. */
+    Point<dim> rotation_centre;
     /** The friction law. */
     Friction friction = Friction::frictionless;
     /** Coulomb friction coefficient. */
@@ -262,6 +329,13 @@ namespace impm
      *  'Displacement'). */
     void
     parse_force(ParameterHandler &prm);
+
+    /** @brief Read 'Rotation', 'Rotation axis' and 'Rotation centre'
+     *  (after the shape); a turning box becomes a polygon (2D) or a
+     *  surface of 12 triangles (3D), whose faces are probed at Gauss
+     *  points. */
+    void
+    parse_rotation(ParameterHandler &prm);
   };
 } // namespace impm
 

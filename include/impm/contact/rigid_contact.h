@@ -284,8 +284,10 @@ namespace impm
       /** The face's centre at the start of the step. */
       Point<dim> start_position;
       /** The face as the body's proximity() needs it: its outward normal,
-       *  start and half-lengths. */
+       *  start and half-lengths, in the body's frame. */
       typename RigidBody<dim>::Facing facing;
+      /** The face's outward normal (an axis). */
+      Tensor<1, dim> face_normal;
       /** The face's area (length in 2D) times the Gauss point's
        *  weight. */
       double area;
@@ -329,6 +331,10 @@ namespace impm
      *  the change over the attempt. */
     std::vector<Tensor<1, dim>> displacement, start_displacement,
       displacement_increment;
+    /** The bodies' rotation at the attempt's target and at its start,
+     *  and the rotation over the attempt (target times start's
+     *  transpose). */
+    std::vector<Tensor<2, dim>> rotation, start_rotation, rotation_increment;
     /** The bodies' displacement at the last accepted step on the
      *  force-driven components (zero on the others). */
     std::vector<Tensor<1, dim>> accepted_unknowns;
