@@ -45,9 +45,10 @@ namespace impm
 
 
   double
-  NewtonSolver::linear_tolerance(const double residual) const
+  NewtonSolver::linear_tolerance(const double residual,
+                                 const bool   contact_changed) const
   {
-    if (!parameters.adaptive_linear_tolerance)
+    if (!parameters.adaptive_linear_tolerance || contact_changed)
       return parameters.linear_tolerance;
     // Eisenstat and Walker's forcing term, and no tighter than needed to
     // bring the residual below the Newton tolerance.
@@ -90,9 +91,9 @@ namespace impm
             problem.assemble_matrix();
             const bool estimate =
               parameters.estimate_condition && iteration == 0;
-            record.linear_solves.push_back(
-              problem.solve_and_update(linear_tolerance(residual.relative),
-                                       estimate));
+            record.linear_solves.push_back(problem.solve_and_update(
+              linear_tolerance(residual.relative, residual.contact_changed),
+              estimate));
             if (!record.linear_solves.back().success)
               {
                 record.outcome = NewtonOutcome::linear_solve_failed;

@@ -169,9 +169,15 @@ namespace impm
      * near it so that Newton stays quadratic (Eisenstat and Walker's choice
      * 2 with gamma = 0.1, alpha = 2, on the relative residual), and never
      * tighter than needed to bring the residual below the Newton tolerance.
+     * After an iterate in which a contact changed its state (@p
+     * contact_changed), 'Solver/Linear tolerance' itself: an inexact
+     * correction across a contact's kink let Newton cycle between contact
+     * states on a stiff penalty (the plate at h = 1/32 m with penalty
+     * factor 1000; doc/benchmarks/README.md, "Rigid contact").
      */
     double
-    linear_tolerance(const double residual) const;
+    linear_tolerance(const double residual,
+                     const bool   contact_changed = false) const;
 
   private:
     const Parameters::Solver &parameters;
