@@ -230,6 +230,60 @@ namespace impm
           edge_normals[t][k] =
             edge_sum[{std::min(from, to), std::max(from, to)}];
         }
+
+    tree.clear();
+    tree_order.resize(triangles.size());
+    for (unsigned int t = 0; t < triangles.size(); ++t)
+      tree_order[t] = t;
+    build_tree(0, triangles.size());
+  }
+
+
+
+  unsigned int
+  TriangulatedSurface::build_tree(const unsigned int first,
+                                  const unsigned int count)
+  {
+    const unsigned int index = tree.size();
+    tree.emplace_back();
+    TreeNode node;
+    node.lower = node.upper = vertices[triangles[tree_order[first]][0]];
+    for (unsigned int i = first; i < first + count; ++i)
+      for (const unsigned int v : triangles[tree_order[i]])
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            node.lower[d] = std::min(node.lower[d], vertices[v][d]);
+            node.upper[d] = std::max(node.upper[d], vertices[v][d]);
+          }
+    const unsigned int leaf_size = 4;
+    if (count <= leaf_size)
+      {
+        node.first  = first;
+        node.count  = count;
+        tree[index] = node;
+        return index;
+      }
+    // Split at the median of the triangles' centroids along the box's
+    // longest side.
+    unsigned int axis = 0;
+    for (unsigned int d = 1; d < 3; ++d)
+      if (node.upper[d] - node.lower[d] > node.upper[axis] - node.lower[axis])
+        axis = d;
+    const auto centroid = [&](const unsigned int t) {
+      return vertices[triangles[t][0]][axis] + vertices[triangles[t][1]][axis] +
+             vertices[triangles[t][2]][axis];
+    };
+    const unsigned int half = count / 2;
+    std::nth_element(tree_order.begin() + first,
+                     tree_order.begin() + first + half,
+                     tree_order.begin() + first + count,
+                     [&](const unsigned int a, const unsigned int b) {
+                       return centroid(a) < centroid(b);
+                     });
+    node.children[0] = build_tree(first, half);
+    node.children[1] = build_tree(first + half, count - half);
+    tree[index]      = node;
+    return index;
   }
 
 
@@ -238,21 +292,59 @@ namespace impm
   TriangulatedSurface::proximity(const Point<3> &x) const
   {
     double            distance_squared = std::numeric_limits<double>::max();
-    unsigned int      nearest_triangle = 0;
+    unsigned int      nearest_triangle = triangles.size();
     NearestOnTriangle nearest{x, 0};
-    for (unsigned int t = 0; t < triangles.size(); ++t)
+    // The squared distance of x from a node's box.
+    const auto box_distance = [&](const TreeNode &node) {
+      double sum = 0.;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          const double outside =
+            std::max({node.lower[d] - x[d], x[d] - node.upper[d], 0.});
+          sum += outside * outside;
+        }
+      return sum;
+    };
+    // Depth first, nearer child first; a box farther than the nearest
+    // triangle found is skipped (one at the same distance is not: a tie
+    // goes to the lowest index, as in a search of all triangles).
+    // (The median split keeps the tree's depth at log2 of the triangles,
+    // and the stack holds at most one node more than the depth.)
+    std::array<unsigned int, 128> stack;
+    unsigned int                  n_stacked = 0;
+    stack[n_stacked++]                      = 0;
+    while (n_stacked > 0)
       {
-        const auto   candidate = nearest_on_triangle(x,
-                                                   vertices[triangles[t][0]],
-                                                   vertices[triangles[t][1]],
-                                                   vertices[triangles[t][2]]);
-        const double d         = (x - candidate.point).norm_square();
-        if (d < distance_squared)
+        const TreeNode &node = tree[stack[--n_stacked]];
+        if (box_distance(node) > distance_squared)
+          continue;
+        if (node.count > 0)
           {
-            distance_squared = d;
-            nearest          = candidate;
-            nearest_triangle = t;
+            for (unsigned int i = node.first; i < node.first + node.count; ++i)
+              {
+                const unsigned int t = tree_order[i];
+                const auto         candidate =
+                  nearest_on_triangle(x,
+                                      vertices[triangles[t][0]],
+                                      vertices[triangles[t][1]],
+                                      vertices[triangles[t][2]]);
+                const double d = (x - candidate.point).norm_square();
+                if (d < distance_squared ||
+                    (d == distance_squared && t < nearest_triangle))
+                  {
+                    distance_squared = d;
+                    nearest          = candidate;
+                    nearest_triangle = t;
+                  }
+              }
+            continue;
           }
+        const double near_first  = box_distance(tree[node.children[0]]),
+                     near_second = box_distance(tree[node.children[1]]);
+        // The nearer child on top of the stack.
+        const bool first_nearer = near_first <= near_second;
+        stack[n_stacked++]      = node.children[first_nearer ? 1 : 0];
+        stack[n_stacked++]      = node.children[first_nearer ? 0 : 1];
       }
     Tensor<1, 3> pseudo_normal;
     if (nearest.feature == 0)

@@ -19,7 +19,9 @@ namespace impm
    *
    * It answers what the contact needs: the signed distance of a point from
    * the surface (negative inside), the outward normal and its derivative.
-   * The nearest point is found over all triangles; the sign comes from the
+   * The nearest point is found with a bounding-volume hierarchy of the
+   * triangles (the same triangle as a search of all, ties going to the
+   * lowest index); the sign comes from the
    * angle-weighted pseudo-normal of the nearest feature (face, edge or
    * vertex), which is exact for a closed, consistently oriented surface.
    * On a face the normal is the face's and does not turn; where the nearest
@@ -81,9 +83,27 @@ namespace impm
     }
 
   private:
-    /** Check the mesh, orient it outward and compute the pseudo-normals. */
+    /** Check the mesh, orient it outward, compute the pseudo-normals and
+     *  build the search tree. */
     void
     prepare();
+
+    /** @brief A node of the search tree: a box holding triangles
+     *  tree_order[first, first + count) (a leaf) or its two children. */
+    struct TreeNode
+    {
+      /** The box. */
+      Point<3> lower, upper;
+      /** The triangles of a leaf (count > 0), in tree_order. */
+      unsigned int first = 0, count = 0;
+      /** The children of an inner node (count == 0). */
+      unsigned int children[2] = {0, 0};
+    };
+
+    /** @brief Build the tree over tree_order[first, first + count) below
+     *  a new node; returns its index. */
+    unsigned int
+    build_tree(const unsigned int first, const unsigned int count);
 
     std::vector<Point<3>>                    vertices;
     std::vector<std::array<unsigned int, 3>> triangles;
@@ -94,6 +114,12 @@ namespace impm
     /** Pseudo-normal of each triangle's edges (edge k from corner k to
      *  corner k + 1): the sum of its two triangles' normals. */
     std::vector<std::array<Tensor<1, 3>, 3>> edge_normals;
+    /** The search tree (a bounding-volume hierarchy, root first): the
+     *  nearest triangle is found by visiting the boxes nearer than the
+     *  nearest triangle found so far, nearer child first. */
+    std::vector<TreeNode> tree;
+    /** The triangles in the order of the tree's leaves. */
+    std::vector<unsigned int> tree_order;
   };
 } // namespace impm
 
