@@ -49,7 +49,17 @@ namespace impm
     , applied_force(rigid_bodies.size())
     , force_on_material(rigid_bodies.size())
     , forces_on_bodies(rigid_bodies.size())
-  {}
+  {
+    unsigned int next = 0;
+    for (const auto &body : rigid_bodies)
+      if (body.friction != RigidBody<dim>::Friction::frictionless)
+        {
+          friction_slot_base.push_back(next);
+          next += 2 * dim * probes_per_face;
+        }
+      else
+        friction_slot_base.push_back(numbers::invalid_unsigned_int);
+  }
 
 
 
@@ -89,9 +99,13 @@ namespace impm
   RigidContact<dim>::traction_entries(
     const std::vector<RigidBody<dim>> &rigid_bodies)
   {
-    return has_friction(rigid_bodies) ?
-             2 * dim * max_face_points(rigid_bodies) * dim :
-             0;
+    // dim per probe of each face, for each body with friction: two bodies
+    // may touch the same face.
+    unsigned int n_frictional = 0;
+    for (const auto &body : rigid_bodies)
+      n_frictional +=
+        body.friction != RigidBody<dim>::Friction::frictionless ? 1 : 0;
+    return n_frictional * 2 * dim * max_face_points(rigid_bodies) * dim;
   }
 
 
@@ -272,7 +286,10 @@ namespace impm
                             (2. * gauss.point(i)[0] - 1.) * half_length[d];
                           weight *= gauss.weight(i);
                         }
-                    probe.slot           = face * probes_per_face + k;
+                    probe.slot =
+                      friction_slot_base[b] == numbers::invalid_unsigned_int ?
+                        numbers::invalid_unsigned_int :
+                        friction_slot_base[b] + face * probes_per_face + k;
                     probe.start_position = at;
                     probe.facing.start =
                       body.rotates() ? body.to_body_frame(at,
@@ -280,7 +297,7 @@ namespace impm
                                                           start_rotation[b]) :
                                        at - start_displacement[b];
                     probe.area = weight * face_area;
-                    if (traction_index != PointLayout::absent)
+                    if (probe.slot != numbers::invalid_unsigned_int)
                       for (unsigned int d = 0; d < dim; ++d)
                         probe.previous_traction[d] =
                           properties[traction_index + probe.slot * dim + d];
@@ -638,7 +655,7 @@ namespace impm
         force.tangential -= probe.friction_force;
         ++force.n_contacts;
         force.n_slipping += probe.slipping ? 1 : 0;
-        if (friction)
+        if (probe.slot != numbers::invalid_unsigned_int)
           for (unsigned int d = 0; d < dim; ++d)
             tractions[probe.point * n_traction_entries + probe.slot * dim + d] =
               probe.traction[d];

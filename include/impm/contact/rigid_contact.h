@@ -65,7 +65,8 @@ namespace impm
   public:
     /**
      * @brief The entries of the friction tractions per point: dim per
-     * probe of each face (0 without friction).
+     * probe of each face for each body with friction (0 without
+     * friction).
      */
     static unsigned int
     traction_entries(const std::vector<RigidBody<dim>> &rigid_bodies);
@@ -277,9 +278,12 @@ namespace impm
       unsigned int point;
       /** Index of the rigid body. */
       unsigned int body;
-      /** Which of the point's probes: face (2 axis + 1 if on the + side)
-       *  times max_face_points() plus the Gauss point on the face; its
-       *  friction traction's place in the point's properties. */
+      /** For a body with friction, which of the point's probes: the
+       *  body's first slot (friction_slot_base), plus the face (2 axis + 1
+       *  if on the + side) times max_face_points(), plus the Gauss point on
+       *  the face: its friction traction's place in the point's
+       *  properties. numbers::invalid_unsigned_int for a frictionless
+       *  body (nothing stored). */
       unsigned int slot;
       /** The face's centre at the start of the step. */
       Point<dim> start_position;
@@ -324,6 +328,10 @@ namespace impm
     const bool friction;
     /** max_face_points() and traction_entries() of the bodies. */
     const unsigned int probes_per_face, n_traction_entries;
+    /** Each body's first friction slot in a point (its friction tractions
+     *  are its own, also where another body touches the same face);
+     *  numbers::invalid_unsigned_int for a frictionless body. */
+    std::vector<unsigned int> friction_slot_base;
     /** The bodies' force-driven components (body by body). */
     const std::vector<Unknown> body_unknowns;
     /** The bodies' displacement at the attempt's target (on the
