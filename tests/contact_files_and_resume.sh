@@ -28,6 +28,19 @@ scene=$2
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/script_helpers.sh" "$@"
 settings=(--set "Output/Interval=1")
+# spans FILE AXIS LOW HIGH TOLERANCE: the VTU file's points span [LOW, HIGH]
+# along axis AXIS (0, 1, 2) within TOLERANCE, as VTK's reader sees them.
+spans() {
+  /usr/bin/python3 - "$@" <<'PYTHON'
+import sys, vtk
+name, axis, low, high, tolerance = sys.argv[1], int(sys.argv[2]), *map(float, sys.argv[3:6])
+reader = vtk.vtkXMLUnstructuredGridReader()
+reader.SetFileName(name)
+reader.Update()
+bounds = reader.GetOutput().GetBounds()
+assert abs(bounds[2 * axis] - low) < tolerance and abs(bounds[2 * axis + 1] - high) < tolerance, bounds
+PYTHON
+}
 
 # 1. The uninterrupted run and its files.
 "$impm" "$scene" "${settings[@]}" > full.txt 2>&1 || fail "the uninterrupted run failed"
@@ -37,14 +50,8 @@ untimed results/steps.csv > full_steps.csv
 n_points=$(grep -c 'part="0" file="points_' results/points.pvd)
 [ "$(grep -c 'part="1" file="rigid_1_' results/points.pvd)" -eq "$n_points" ] || fail "the floor is not in every output step"
 [ "$(grep -c 'part="2" file="rigid_2_' results/points.pvd)" -eq "$n_points" ] || fail "the plate is not in every output step"
-/usr/bin/python3 - results/rigid_2_00003.vtu <<'PYTHON' || fail "the plate's surface is not where it was moved"
-import sys, vtk
-reader = vtk.vtkXMLUnstructuredGridReader()
-reader.SetFileName(sys.argv[1])
-reader.Update()
-bounds = reader.GetOutput().GetBounds()
-assert abs(bounds[0] - 0.0015) < 1e-12 and abs(bounds[1] - 0.5015) < 1e-12, bounds
-PYTHON
+spans results/rigid_2_00003.vtu 0 0.0015 0.5015 1e-12 ||
+  fail "the plate's surface is not where it was moved"
 
 # 2. Stopped after step 10 and resumed.
 rm -rf results
@@ -88,12 +95,6 @@ summary pushed_part2.txt > pushed_resumed_summary.txt
 compare pushed_full_summary.txt pushed_resumed_summary.txt "the resumed pushed plate ends in another state"
 untimed results/steps.csv > pushed_resumed_steps.csv
 compare pushed_full_steps.csv pushed_resumed_steps.csv "steps.csv of the resumed pushed plate differs"
-/usr/bin/python3 - results/rigid_1_00010.vtu <<'PYTHON' || fail "the pushed plate's surface is not where its unknown put it"
-import sys, vtk
-reader = vtk.vtkXMLUnstructuredGridReader()
-reader.SetFileName(sys.argv[1])
-reader.Update()
-bounds = reader.GetOutput().GetBounds()
-assert abs(bounds[2] - 0.750002) < 1e-6 and abs(bounds[3] - 1.000002) < 1e-6, bounds
-PYTHON
+spans results/rigid_1_00010.vtu 1 0.750002 1.000002 1e-6 ||
+  fail "the pushed plate's surface is not where its unknown put it"
 echo "contact_files_and_resume: passed"
