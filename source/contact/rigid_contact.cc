@@ -101,10 +101,10 @@ namespace impm
   {
     // dim per probe of each face, for each body with friction: two bodies
     // may touch the same face.
-    unsigned int n_frictional = 0;
-    for (const auto &body : rigid_bodies)
-      n_frictional +=
-        body.friction != RigidBody<dim>::Friction::frictionless ? 1 : 0;
+    const unsigned int n_frictional = std::count_if(
+      rigid_bodies.begin(), rigid_bodies.end(), [](const RigidBody<dim> &body) {
+        return body.friction != RigidBody<dim>::Friction::frictionless;
+      });
     return n_frictional * 2 * dim * max_face_points(rigid_bodies) * dim;
   }
 
@@ -435,155 +435,6 @@ namespace impm
             internal_force.local_element(step.dofs[v * dim + i]) -=
               probe.weights[v] * force[i];
       }
-  }
-
-
-
-  template <int dim>
-  Vector<double>
-  RigidContact<dim>::unknown_residuals() const
-  {
-    Vector<double> residuals(body_unknowns.size());
-    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
-      residuals[j] =
-        force_on_material[body_unknowns[j].body][body_unknowns[j].component];
-    Utilities::MPI::sum(residuals,
-                        grid.get_triangulation().get_communicator(),
-                        residuals);
-    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
-      residuals[j] =
-        applied_force[body_unknowns[j].body][body_unknowns[j].component] -
-        residuals[j];
-    return residuals;
-  }
-
-
-
-  template <int dim>
-  double
-  RigidContact<dim>::applied_force_norm() const
-  {
-    double sum = 0.;
-    for (const Unknown &unknown : body_unknowns)
-      sum += std::pow(applied_force[unknown.body][unknown.component], 2);
-    return std::sqrt(sum);
-  }
-
-
-
-  template <int dim>
-  void
-  RigidContact<dim>::add_coupling(const LoadStepSystem<dim> &system,
-                                  std::vector<NodalVector>  &columns,
-                                  std::vector<NodalVector>  &rows,
-                                  FullMatrix<double>        &corner) const
-  {
-    const unsigned int m = body_unknowns.size();
-    columns.resize(m);
-    rows.resize(m);
-    for (unsigned int j = 0; j < m; ++j)
-      {
-        grid.reinit_vector(columns[j]);
-        grid.reinit_vector(rows[j]);
-      }
-    corner.reinit(m, m);
-    // Unknowns of each body.
-    std::vector<std::vector<unsigned int>> of_body(rigid_bodies.size());
-    for (unsigned int j = 0; j < m; ++j)
-      of_body[body_unknowns[j].body].push_back(j);
-    for (const Probe &probe : probes)
-      {
-        if (!probe.active || of_body[probe.body].empty())
-          continue;
-        // The probe's force f depends on x - w (x the face's position, w
-        // the body's displacement): df/dw = -df/dx = -A.
-        const Tensor<2, dim> &A    = probe.force_derivative;
-        const PointStep<dim> &step = system.point_steps[probe.point];
-        for (const unsigned int j : of_body[probe.body])
-          {
-            const unsigned int c = body_unknowns[j].component;
-            // Internal force -N^T f: derivative N^T A e_c. Its force sum
-            // f_c: derivative e_c^T A N.
-            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-              for (unsigned int i = 0; i < dim; ++i)
-                {
-                  const auto dof = step.dofs[v * dim + i];
-                  columns[j].local_element(dof) += probe.weights[v] * A[i][c];
-                  rows[j].local_element(dof) += probe.weights[v] * A[c][i];
-                }
-            for (const unsigned int k : of_body[probe.body])
-              corner(j, k) -= A[c][body_unknowns[k].component];
-          }
-      }
-    for (unsigned int j = 0; j < m; ++j)
-      {
-        columns[j].compress(VectorOperation::add);
-        rows[j].compress(VectorOperation::add);
-      }
-    Utilities::MPI::sum(corner,
-                        grid.get_triangulation().get_communicator(),
-                        corner);
-  }
-
-
-
-  template <int dim>
-  void
-  RigidContact<dim>::add_to_unknowns(const Vector<double> &correction)
-  {
-    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
-      {
-        const auto &[body, component] = body_unknowns[j];
-        displacement[body][component] += correction[j];
-        displacement_increment[body][component] += correction[j];
-      }
-  }
-
-
-
-  template <int dim>
-  double
-  RigidContact<dim>::max_unknown_increment() const
-  {
-    double largest = 0.;
-    for (const auto &[body, component] : body_unknowns)
-      largest = std::max(largest,
-                         std::abs(displacement_increment[body][component]) /
-                           grid.cartesian().cell_size[component]);
-    return largest;
-  }
-
-
-
-  template <int dim>
-  Tensor<1, dim>
-  RigidContact<dim>::displacement_of(const unsigned int k,
-                                     const double       load_factor) const
-  {
-    return rigid_bodies[k].displacement_at(load_factor) + accepted_unknowns[k];
-  }
-
-
-
-  template <int dim>
-  void
-  RigidContact<dim>::save(RunState &state) const
-  {
-    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
-      state.set(
-        "contact.unknown " + std::to_string(j),
-        accepted_unknowns[body_unknowns[j].body][body_unknowns[j].component]);
-  }
-
-
-
-  template <int dim>
-  void
-  RigidContact<dim>::load(const RunState &state)
-  {
-    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
-      accepted_unknowns[body_unknowns[j].body][body_unknowns[j].component] =
-        state.get_double("contact.unknown " + std::to_string(j));
   }
 
 

@@ -1,0 +1,182 @@
+// The rigid bodies' motion in RigidContact: the force-driven components
+// as unknowns of the Newton solve (their residual, the coupling blocks
+// of the bordered matrix, the update, the checkpoint) and each body's
+// displacement for output. The probes and their forces are in
+// rigid_contact.cc.
+#include <impm/contact/rigid_contact.h>
+#include <impm/system/load_step_system.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace impm
+{
+  template <int dim>
+  Vector<double>
+  RigidContact<dim>::unknown_residuals() const
+  {
+    Vector<double> residuals(body_unknowns.size());
+    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
+      residuals[j] =
+        force_on_material[body_unknowns[j].body][body_unknowns[j].component];
+    Utilities::MPI::sum(residuals,
+                        grid.get_triangulation().get_communicator(),
+                        residuals);
+    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
+      residuals[j] =
+        applied_force[body_unknowns[j].body][body_unknowns[j].component] -
+        residuals[j];
+    return residuals;
+  }
+
+
+
+  template <int dim>
+  double
+  RigidContact<dim>::applied_force_norm() const
+  {
+    double sum = 0.;
+    for (const Unknown &unknown : body_unknowns)
+      sum += std::pow(applied_force[unknown.body][unknown.component], 2);
+    return std::sqrt(sum);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::add_coupling(const LoadStepSystem<dim> &system,
+                                  std::vector<NodalVector>  &columns,
+                                  std::vector<NodalVector>  &rows,
+                                  FullMatrix<double>        &corner) const
+  {
+    const unsigned int m = body_unknowns.size();
+    columns.resize(m);
+    rows.resize(m);
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        grid.reinit_vector(columns[j]);
+        grid.reinit_vector(rows[j]);
+      }
+    corner.reinit(m, m);
+    // Unknowns of each body.
+    std::vector<std::vector<unsigned int>> of_body(rigid_bodies.size());
+    for (unsigned int j = 0; j < m; ++j)
+      of_body[body_unknowns[j].body].push_back(j);
+    for (const Probe &probe : probes)
+      {
+        if (!probe.active || of_body[probe.body].empty())
+          continue;
+        // The probe's force f depends on x - w (x the face's position, w
+        // the body's displacement): df/dw = -df/dx = -A.
+        const Tensor<2, dim> &A    = probe.force_derivative;
+        const PointStep<dim> &step = system.point_steps[probe.point];
+        for (const unsigned int j : of_body[probe.body])
+          {
+            const unsigned int c = body_unknowns[j].component;
+            // Internal force -N^T f: derivative N^T A e_c. Its force sum
+            // f_c: derivative e_c^T A N.
+            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+              for (unsigned int i = 0; i < dim; ++i)
+                {
+                  const auto dof = step.dofs[v * dim + i];
+                  columns[j].local_element(dof) += probe.weights[v] * A[i][c];
+                  rows[j].local_element(dof) += probe.weights[v] * A[c][i];
+                }
+            for (const unsigned int k : of_body[probe.body])
+              corner(j, k) -= A[c][body_unknowns[k].component];
+          }
+      }
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        columns[j].compress(VectorOperation::add);
+        rows[j].compress(VectorOperation::add);
+      }
+    Utilities::MPI::sum(corner,
+                        grid.get_triangulation().get_communicator(),
+                        corner);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::add_to_unknowns(const Vector<double> &correction)
+  {
+    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
+      {
+        const auto &[body, component] = body_unknowns[j];
+        displacement[body][component] += correction[j];
+        displacement_increment[body][component] += correction[j];
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  RigidContact<dim>::max_unknown_increment() const
+  {
+    double largest = 0.;
+    for (const auto &[body, component] : body_unknowns)
+      largest = std::max(largest,
+                         std::abs(displacement_increment[body][component]) /
+                           grid.cartesian().cell_size[component]);
+    return largest;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  RigidContact<dim>::displacement_of(const unsigned int k,
+                                     const double       load_factor) const
+  {
+    return rigid_bodies[k].displacement_at(load_factor) + accepted_unknowns[k];
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::save(RunState &state) const
+  {
+    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
+      state.set(
+        "contact.unknown " + std::to_string(j),
+        accepted_unknowns[body_unknowns[j].body][body_unknowns[j].component]);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::load(const RunState &state)
+  {
+    for (unsigned int j = 0; j < body_unknowns.size(); ++j)
+      accepted_unknowns[body_unknowns[j].body][body_unknowns[j].component] =
+        state.get_double("contact.unknown " + std::to_string(j));
+  }
+
+
+
+  // The members defined here, for both dimensions (the class's other
+  // members are instantiated in rigid_contact.cc).
+#define IMPM_INSTANTIATE(dim)                                                  \
+  template Vector<double> RigidContact<dim>::unknown_residuals() const;        \
+  template double         RigidContact<dim>::applied_force_norm() const;       \
+  template void   RigidContact<dim>::add_coupling(const LoadStepSystem<dim> &, \
+                                                std::vector<NodalVector> &,  \
+                                                std::vector<NodalVector> &,  \
+                                                FullMatrix<double> &) const; \
+  template void   RigidContact<dim>::add_to_unknowns(const Vector<double> &);  \
+  template double RigidContact<dim>::max_unknown_increment() const;            \
+  template Tensor<1, dim> RigidContact<dim>::displacement_of(                  \
+    const unsigned int, const double) const;                                   \
+  template void RigidContact<dim>::save(RunState &) const;                     \
+  template void RigidContact<dim>::load(const RunState &);
+  IMPM_INSTANTIATE(2)
+  IMPM_INSTANTIATE(3)
+#undef IMPM_INSTANTIATE
+} // namespace impm
