@@ -356,18 +356,18 @@ namespace impm
                         Patterns::Integer(1, 1000),
                         "Newton iterations allowed per load step; a step "
                         "that needs more stops the run with an error.");
-      prm.declare_entry("Linear solver",
-                        "automatic",
-                        Patterns::Selection(
-                          "automatic|direct|MUMPS|GMRES with AMG"),
-                        "automatic (direct up to 1500 DoFs in the load "
-                        "step's system, GMRES with AMG above: the crossover "
-                        "measured on the 2D collapse, doc/benchmarks), "
-                        "direct (Trilinos Amesos KLU, a serial "
-                        "factorisation), MUMPS (Trilinos Amesos MUMPS, a "
-                        "factorisation shared by the processes) or GMRES "
-                        "with AMG (Trilinos ML, the translations as near "
-                        "null space).");
+      prm.declare_entry(
+        "Linear solver",
+        "automatic",
+        Patterns::Selection("automatic|direct|MUMPS|GMRES with AMG"),
+        "automatic (direct up to 1500 DoFs in the load "
+        "step's system, GMRES with AMG above: the crossover "
+        "measured on the 2D collapse, doc/benchmarks), "
+        "direct (Trilinos Amesos KLU, a serial "
+        "factorisation), MUMPS (Trilinos Amesos MUMPS, a "
+        "factorisation shared by the processes) or GMRES "
+        "with AMG (Trilinos ML, the rigid-body modes (translations "
+        "and rotations) as near null space).");
       prm.declare_entry("Linear tolerance",
                         "1e-12",
                         Patterns::Double(1e-16, 1e-2),

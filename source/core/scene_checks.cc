@@ -238,8 +238,9 @@ namespace impm
         // per cell of the grid about 0.9 kB in 2D and 1.7 kB in 3D (almost
         // empty grids, doc/benchmarks/README.md, "Reliability"), per material
         // point 2.7 kB in 2D (the 10^6-point collapse, doc/benchmarks/
-        // scaling.md); 3D points, not measured, couple to three times the
-        // nodes and are taken at 8 kB.
+        // scaling.md); per 3D point 5.0 kB at 884,736 points and 7.5 kB
+        // at 110,592 (the 3D benchmark on two processes, less the grid and
+        // the processes' libraries, ibid.), taken at 8 kB.
         const double   bytes_per_cell  = dim == 2 ? 0.9e3 : 1.7e3;
         const double   bytes_per_point = dim == 2 ? 2.7e3 : 8e3;
         MemoryEstimate estimate;

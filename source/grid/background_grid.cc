@@ -69,6 +69,18 @@ namespace impm
 
   template <int dim>
   void
+  BackgroundGrid<dim>::partition_by(const CellWeight &weight)
+  {
+    auto connection = triangulation.signals.weight.connect(weight);
+    triangulation.repartition();
+    connection.disconnect();
+    distribute_dofs();
+  }
+
+
+
+  template <int dim>
+  void
   BackgroundGrid<dim>::repartition(const std::function<void()> &prepare,
                                    const std::function<void()> &unpack)
   {

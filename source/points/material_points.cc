@@ -15,7 +15,7 @@ namespace impm
   template <int dim>
   MaterialPoints<dim>::MaterialPoints(
     const std::vector<Body<dim>> &bodies,
-    const BackgroundGrid<dim>    &grid,
+    BackgroundGrid<dim>          &grid,
     const MPI_Comm                communicator,
     const Tensor<1, dim>         &gravity_from_the_start,
     const RunState               *checkpoint_state,
@@ -31,6 +31,19 @@ namespace impm
                                any_plastic,
                                bodies.size() > 1,
                                n_contact_tractions);
+    // Each process seeds the points of its cells: share the cells by the
+    // points they will hold first, so that the processes whose cells hold
+    // the bodies do not seed (and store) all points until the first
+    // repartition.
+    if (checkpoint_state == nullptr &&
+        Utilities::MPI::n_mpi_processes(communicator) > 1)
+      grid.partition_by(
+        [this](const typename Triangulation<dim>::cell_iterator &cell,
+               const typename Triangulation<dim>::CellStatus     status) {
+          return status == Triangulation<dim>::CELL_PERSIST ?
+                   point_weight * n_seeded_points(cell) :
+                   0u;
+        });
     particle_handler.initialize(grid.get_triangulation(),
                                 grid.get_mapping(),
                                 property_layout.n_properties);
@@ -98,6 +111,66 @@ namespace impm
 
 
   template <int dim>
+  std::pair<Point<dim>, std::uint64_t>
+  MaterialPoints<dim>::cell_origin(
+    const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    std::uint64_t cell_index = 0;
+    Point<dim>    cell_lower;
+    for (int d = dim - 1; d >= 0; --d)
+      {
+        const unsigned int i = static_cast<unsigned int>(
+          std::floor((cell->center()[d] - grid.lower[d]) / grid.cell_size[d]));
+        cell_index    = cell_index * grid.n_cells[d] + i;
+        cell_lower[d] = grid.node_coordinate(d, i);
+      }
+    return {cell_lower, cell_index};
+  }
+
+
+
+  template <int dim>
+  Point<dim>
+  MaterialPoints<dim>::lattice_position(const Point<dim>  &cell_lower,
+                                        const unsigned int n,
+                                        const unsigned int q,
+                                        Point<dim>        &reference) const
+  {
+    Point<dim>   position;
+    unsigned int rest = q;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        reference[d] = (rest % n + 0.5) / n;
+        rest /= n;
+        position[d] = cell_lower[d] + reference[d] * grid.cell_size[d];
+      }
+    return position;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  MaterialPoints<dim>::n_seeded_points(
+    const typename Triangulation<dim>::cell_iterator &cell) const
+  {
+    const Point<dim> cell_lower = cell_origin(cell).first;
+    unsigned int     n_points   = 0;
+    Point<dim>       reference;
+    for (const auto &body : bodies)
+      {
+        const unsigned int n          = body.points_per_direction;
+        const unsigned int n_per_cell = Utilities::pow(n, dim);
+        for (unsigned int q = 0; q < n_per_cell; ++q)
+          if (body.contains(lattice_position(cell_lower, n, q, reference)))
+            ++n_points;
+      }
+    return n_points;
+  }
+
+
+
+  template <int dim>
   void
   MaterialPoints<dim>::seed(const BackgroundGrid<dim> &background,
                             const Tensor<1, dim>      &gravity_from_the_start)
@@ -142,15 +215,7 @@ namespace impm
          background.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          std::uint64_t cell_index = 0;
-          Point<dim>    cell_lower;
-          for (int d = dim - 1; d >= 0; --d)
-            {
-              const unsigned int i = static_cast<unsigned int>(std::floor(
-                (cell->center()[d] - grid.lower[d]) / grid.cell_size[d]));
-              cell_index           = cell_index * grid.n_cells[d] + i;
-              cell_lower[d]        = grid.node_coordinate(d, i);
-            }
+          const auto [cell_lower, cell_index] = cell_origin(cell);
           for (unsigned int b = 0; b < bodies.size(); ++b)
             {
               const auto        &body       = bodies[b];
@@ -172,15 +237,9 @@ namespace impm
                 properties[property_layout.body] = b;
               for (unsigned int q = 0; q < n_per_cell; ++q)
                 {
-                  Point<dim>   position, reference;
-                  unsigned int rest = q;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    {
-                      reference[d] = (rest % n + 0.5) / n;
-                      rest /= n;
-                      position[d] =
-                        cell_lower[d] + reference[d] * grid.cell_size[d];
-                    }
+                  Point<dim>       reference;
+                  const Point<dim> position =
+                    lattice_position(cell_lower, n, q, reference);
                   if (!body.contains(position))
                     continue;
                   ++points_of_body[b];
@@ -478,8 +537,7 @@ namespace impm
     const typename Triangulation<dim>::cell_iterator &cell,
     const typename Triangulation<dim>::CellStatus     status) const
   {
-    constexpr unsigned int point_weight = 1000;
-    unsigned int           n_points     = 0;
+    unsigned int n_points = 0;
     switch (status)
       {
         case Triangulation<dim>::CELL_PERSIST:

@@ -80,6 +80,16 @@ namespace impm
     connect_cell_weight(const CellWeight &weight);
 
     /**
+     * @brief Repartition the cells by @p weight alone (added to deal.II's
+     * 1000 per cell), while no data is attached to them, and distribute the
+     * DoFs anew (collective). Used before the points are seeded, with the
+     * number of points each cell will receive, so that every process seeds
+     * its share instead of the processes whose cells hold the bodies.
+     */
+    void
+    partition_by(const CellWeight &weight);
+
+    /**
      * @brief Repartition the cells over the processes by their weights and
      * distribute the DoFs, constraints, reaction DoFs and node map anew.
      * @param prepare Called before the cells move (e.g. to pack the

@@ -56,6 +56,9 @@ namespace impm
      * @param gravity_from_the_start The acceleration of gravity acting in
      *   full from the first load step (zero if none): the bodies with a
      *   geostatic start take their stress from it.
+     * @param grid The background grid. Before seeding on several
+     *   processes its cells are repartitioned by the points each will
+     *   receive (BackgroundGrid::partition_by).
      * @param checkpoint_state If not null, instead of filling the bodies,
      *   take the points that a checkpoint attached to the grid (which
      *   BackgroundGrid has loaded) and their mass at creation from this
@@ -64,7 +67,7 @@ namespace impm
      *   tractions of a rigid contact (PointLayout::contact_traction), or 0.
      */
     MaterialPoints(const std::vector<Body<dim>> &bodies,
-                   const BackgroundGrid<dim>    &grid,
+                   BackgroundGrid<dim>          &grid,
                    const MPI_Comm                communicator,
                    const Tensor<1, dim>         &gravity_from_the_start,
                    const RunState               *checkpoint_state    = nullptr,
@@ -204,6 +207,32 @@ namespace impm
     unpack_after_repartition();
 
   private:
+    /** Weight of a point in a repartition: as much as a cell. */
+    static constexpr unsigned int point_weight = 1000;
+
+    /**
+     * The lower corner and the structured index (the same on any number
+     * of processes) of a cell of the Cartesian grid.
+     */
+    std::pair<Point<dim>, std::uint64_t>
+    cell_origin(const typename Triangulation<dim>::cell_iterator &cell) const;
+
+    /**
+     * The position of lattice point @p q of a body with @p n points per
+     * cell direction in the cell whose lower corner is @p cell_lower, and
+     * its coordinates in the unit cell (@p reference).
+     */
+    Point<dim>
+    lattice_position(const Point<dim>  &cell_lower,
+                     const unsigned int n,
+                     const unsigned int q,
+                     Point<dim>        &reference) const;
+
+    /** The number of points seed() puts into @p cell (all bodies). */
+    unsigned int
+    n_seeded_points(
+      const typename Triangulation<dim>::cell_iterator &cell) const;
+
     /** Seed the points of every body in the locally owned cells. */
     void
     seed(const BackgroundGrid<dim> &grid,

@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+"""Cell means of the points' pressure, row by row, for a 2D run.
+
+Usage: cell_pressures.py OUTPUT_DIR STEP CELL_SIZE BODY [ROWS] [COLUMNS]
+
+Reads points_<STEP>.pvtu of OUTPUT_DIR (written with 'Output/Fields'
+holding stress and body), groups the points of body BODY (1 for 'Body 1')
+by the grid cell that holds their current position (cells of size
+CELL_SIZE from the origin) and prints, for the ROWS highest rows of cells
+(default 4) and the first COLUMNS columns (default 8), the mean of
+p = -(sigma_xx + sigma_yy + sigma_zz) / 3 in kPa. A pressure that
+alternates from cell to cell along a row is the checkerboard mode of
+constant-per-cell volume averaging (doc/benchmarks/README.md, "F-bar").
+"""
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+
+def read_points(directory, step):
+    """Positions and point data of every piece of points_<step>.pvtu."""
+    pvtu = os.path.join(directory, "points_%05d.pvtu" % step)
+    data = {}
+    for piece in ET.parse(pvtu).getroot().iter("Piece"):
+        reader = vtk.vtkXMLUnstructuredGridReader()
+        reader.SetFileName(os.path.join(directory, piece.get("Source")))
+        reader.Update()
+        grid = reader.GetOutput()
+        if grid.GetNumberOfPoints() == 0:
+            continue
+        data.setdefault("x", []).append(vtk_to_numpy(grid.GetPoints().GetData()))
+        point_data = grid.GetPointData()
+        for i in range(point_data.GetNumberOfArrays()):
+            data.setdefault(point_data.GetArrayName(i), []).append(
+                vtk_to_numpy(point_data.GetArray(i)))
+    return {name: np.concatenate(chunks) for name, chunks in data.items()}
+
+
+def main():
+    if len(sys.argv) < 5:
+        sys.exit(__doc__)
+    directory, step = sys.argv[1], int(sys.argv[2])
+    cell_size, body = float(sys.argv[3]), int(sys.argv[4])
+    n_rows = int(sys.argv[5]) if len(sys.argv) > 5 else 4
+    n_columns = int(sys.argv[6]) if len(sys.argv) > 6 else 8
+    points = read_points(directory, step)
+    for name in ("stress_xx", "stress_yy", "stress_zz", "body"):
+        if name not in points:
+            sys.exit("cell_pressures.py: %s has no field '%s' (write it with "
+                     "'Output/Fields')" % (directory, name))
+    mine = points["body"] == body
+    pressure = -(points["stress_xx"] + points["stress_yy"] +
+                 points["stress_zz"])[mine] / 3.0 / 1000.0
+    cells = np.floor(points["x"][mine, :2] / cell_size).astype(int)
+    top = cells[:, 1].max()
+    for row in range(top, top - n_rows, -1):
+        means = []
+        for column in range(n_columns):
+            here = (cells[:, 0] == column) & (cells[:, 1] == row)
+            means.append("%6.0f" % pressure[here].mean() if here.any() else
+                         "     -")
+        print("y = %-7g" % (row * cell_size), " ".join(means))
+
+
+if __name__ == "__main__":
+    main()
