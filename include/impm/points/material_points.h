@@ -51,14 +51,13 @@ namespace impm
      * @brief Fill the bodies with points on the grid's cells.
      * @param bodies The scene's bodies (shapes, points per cell, density,
      *   material).
-     * @param grid The background grid.
+     * @param grid The background grid. Before seeding on several
+     *   processes its cells are repartitioned by the points each will
+     *   receive (BackgroundGrid::partition_by).
      * @param communicator The processes that share the points.
      * @param gravity_from_the_start The acceleration of gravity acting in
      *   full from the first load step (zero if none): the bodies with a
      *   geostatic start take their stress from it.
-     * @param grid The background grid. Before seeding on several
-     *   processes its cells are repartitioned by the points each will
-     *   receive (BackgroundGrid::partition_by).
      * @param checkpoint_state If not null, instead of filling the bodies,
      *   take the points that a checkpoint attached to the grid (which
      *   BackgroundGrid has loaded) and their mass at creation from this
