@@ -4,7 +4,9 @@
 # 1e-14) and the step control off must stop in load step 1 with the message
 # naming the solver, its iterations and its residual; steps.csv and
 # newton.csv hold the failed attempt. With 200 iterations to 1e-10 the run
-# completes.
+# completes. A body with one point per cell direction (hourglass modes
+# without stiffness) gets a note at the start naming the trap, unless the
+# solver is direct.
 # Usage: linear_solve_failure.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -27,4 +29,21 @@ tail -1 results/steps.csv | grep -q "^1,0.025,0.025,0,0," || fail "steps.csv lac
   --set "Testing/Enabled=false" --set "Solver/Linear iterations=200" > log.txt 2>&1 ||
   fail "with 200 iterations allowed the run failed"
 grep -q "^step   1  load 0.0250  iterations" log.txt || fail "step 1 did not converge"
+
+one_point=(--set "Testing/Enabled=false" --set "Body 1/Points per cell direction=1" --set "Solver/Load steps=1"
+           --set "Solver/Step control=false")
+note="^  note: Body 1 has one point per cell direction: its cells' hourglass modes have no stiffness and GMRES with AMG may not converge; use 2 or more points per cell direction or 'Solver/Linear solver = direct'$"
+for solver in "GMRES with AMG" automatic direct; do
+  rm -rf results
+  "${launcher[@]}" "$impm" "$scene" "${one_point[@]}" --set "Solver/Linear solver=$solver" \
+    > log.txt 2>&1
+  if [ "$solver" = direct ]; then
+    grep -q "note:" log.txt && fail "a note with the direct solver"
+  else
+    grep -q "$note" log.txt || fail "no note on one point per cell direction with '$solver'"
+  fi
+done
+rm -rf results
+"${launcher[@]}" "$impm" "$scene" --set "Testing/Enabled=false" --set "Solver/Load steps=1" > log.txt 2>&1
+grep -q "note:" log.txt && fail "a note with three points per cell direction"
 echo "linear_solve_failure: the failed solve stopped the run with one clear line"

@@ -62,7 +62,9 @@ namespace impm
                           "2",
                           Patterns::Integer(1, 10),
                           "n: each cell the body fills holds up to n^dim "
-                          "regularly placed material points (1 to 10).");
+                          "regularly placed material points (1 to 10). "
+                          "With 1 a cell's hourglass modes have no "
+                          "stiffness: GMRES with AMG may not converge.");
         prm.declare_entry("Density",
                           "1000",
                           Patterns::Double(0.),

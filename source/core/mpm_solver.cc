@@ -9,6 +9,8 @@
 
 #include <csignal>
 #include <filesystem>
+#include <iomanip>
+#include <sstream>
 
 namespace impm
 {
@@ -208,6 +210,21 @@ namespace impm
           << "  bodies:\n";
     for (const auto &body : parameters.bodies)
       pcout << "    " << body.description() << '\n';
+    // Known trap (doc/status.md): with one point per cell direction the
+    // point's gradients are the cell's mean gradients (GIMP: the domain is
+    // the whole cell; standard MPM: the point starts at the centre), which
+    // leave a cell's hourglass displacements without stiffness, and GMRES
+    // with AMG stalls on the system.
+    if (parameters.solver.linear_solver !=
+          Parameters::LinearSolverType::direct &&
+        parameters.solver.linear_solver != Parameters::LinearSolverType::mumps)
+      for (const auto &body : parameters.bodies)
+        if (body.points_per_direction == 1)
+          pcout << "  note: " << body.name
+                << " has one point per cell direction: its cells' "
+                   "hourglass modes have no stiffness and GMRES with AMG "
+                   "may not converge; use 2 or more points per cell "
+                   "direction or 'Solver/Linear solver = direct'\n";
     pcout << "  effects:\n";
     for (const auto &effect : effect_descriptions)
       pcout << "    " << effect << '\n';
@@ -396,8 +413,11 @@ namespace impm
                        });
       problem.reinit_vectors();
     }
-    pcout << "  repartitioned: most points on a process / mean " << before
-          << " -> " << material_points.imbalance() << std::endl;
+    std::ostringstream ratios;
+    ratios << std::fixed << std::setprecision(3) << before << " -> "
+           << material_points.imbalance();
+    pcout << "  repartitioned: most points on a process / mean " << ratios.str()
+          << std::endl;
   }
 
 
