@@ -167,6 +167,9 @@ namespace impm
     wall_timer.stop();
     pcout << "sparsity pattern kept in " << system.n_patterns_reused << " of "
           << system.n_setups << " load-step setups" << std::endl;
+    if (const std::string statistics = linear_solver->statistics();
+        !statistics.empty())
+      pcout << statistics << std::endl;
     postprocessors->finish(wall_timer.wall_time());
     if (!parameters.testing.enabled)
       timer.print_summary();

@@ -389,6 +389,18 @@ namespace impm
                         "Iterations allowed to the iterative linear solver "
                         "per solve; a solve that needs more fails the "
                         "Newton solve (and the step is cut).");
+      prm.declare_entry(
+        "AMG reuse factor",
+        "2",
+        Patterns::Double(0.),
+        "GMRES with AMG, systems of more than 2000 rows (smaller ones ML "
+        "factorises whole, anew for every solve): the multigrid hierarchy "
+        "built for a load step's matrix preconditions its following Newton "
+        "iterations "
+        "until a solve needs more than this factor times the iterations "
+        "of the solve right after the hierarchy was built (at least 10), "
+        "then it is rebuilt; a solve that fails with a kept hierarchy is "
+        "repeated with a new one. 0: a new hierarchy for every solve.");
       prm.declare_entry("Step control",
                         "true",
                         Patterns::Bool(),
@@ -449,6 +461,7 @@ namespace impm
       linear_tolerance          = prm.get_double("Linear tolerance");
       linear_iterations         = prm.get_integer("Linear iterations");
       adaptive_linear_tolerance = prm.get_bool("Adaptive linear tolerance");
+      amg_reuse_factor          = prm.get_double("AMG reuse factor");
       step_control              = prm.get_bool("Step control");
       minimum_step              = prm.get_double("Minimum load step");
       divergence_factor         = prm.get_double("Divergence factor");

@@ -10,6 +10,7 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -131,6 +132,16 @@ namespace impm
      * @brief GMRES preconditioned by Trilinos ML's algebraic multigrid, to
      * the tolerance the Newton solver asks for, relative to the right-hand
      * side, in at most 'Solver/Linear iterations' iterations.
+     *
+     * The hierarchy built for a load step's matrix preconditions the
+     * following Newton iterations of the step (the matrix is reassembled in
+     * place: its values change, its pattern does not) until a solve needs
+     * more than 'Solver/AMG reuse factor' times the iterations of the first
+     * solve after the build; a new system (set_near_null_space(), called
+     * at every load step's setup) or a failed solve with a kept hierarchy
+     * builds a new one. A system small enough for ML to factorise whole
+     * (no more rows than its coarse size, 2000 with deal.II's settings)
+     * gets a new factorisation for every solve.
      */
     class GmresAmgSolver : public LinearSolver
     {
@@ -138,6 +149,7 @@ namespace impm
       /** @brief A Krylov solver with the scene's iteration limit. */
       explicit GmresAmgSolver(const Parameters::Solver &parameters)
         : max_iterations(parameters.linear_iterations)
+        , reuse_factor(parameters.amg_reuse_factor)
       {}
 
       bool
@@ -149,7 +161,21 @@ namespace impm
       void
       set_near_null_space(NearNullSpace modes) override
       {
+        // A new system: the hierarchy of the last one (which points to its
+        // matrix and modes) goes first.
+        amg.reset();
         near_null_space = std::move(modes);
+      }
+
+      std::string
+      statistics() const override
+      {
+        if (n_solves == 0)
+          return "";
+        return "AMG hierarchy built for " + std::to_string(n_builds) + " of " +
+               std::to_string(n_solves) + " GMRES solves (" +
+               std::to_string(n_repeated) +
+               " repeated with a new one after a kept one failed)";
       }
 
     protected:
@@ -157,7 +183,78 @@ namespace impm
       try_solve(const LinearSolveRequest &request,
                 LinearSolveReport        &report) override
       {
-        TrilinosWrappers::PreconditionAMG                 amg;
+        ++n_solves;
+        report.iterations = 0;
+        // A kept hierarchy serves while the solves need at most this many
+        // iterations; the solve that needs more is the last with it.
+        const double allowed =
+          reuse_factor * std::max(iterations_after_build, 10u);
+        const bool kept = reuse_factor > 0. && amg != nullptr && !one_level &&
+                          amg_matrix == &request.matrix.trilinos_matrix() &&
+                          last_iterations <= allowed;
+        if (!kept)
+          build(request.matrix);
+        try
+          {
+            // With a kept hierarchy a solve gives up at twice the allowed
+            // iterations (and is repeated with a new one) rather than at
+            // the iteration limit.
+            solve_all(request,
+                      kept ? std::min<unsigned int>(max_iterations,
+                                                    std::ceil(2 * allowed)) :
+                             max_iterations,
+                      report);
+          }
+        catch (const std::exception &)
+          {
+            // A kept hierarchy may no longer fit the matrix: once more with
+            // a new one before the solve is reported as failed.
+            if (!kept)
+              throw;
+            ++n_repeated;
+            build(request.matrix);
+            solve_all(request, max_iterations, report);
+          }
+      }
+
+      /**
+       * @brief The solves of @p request (its right-hand side and any
+       * additional ones) with the current hierarchy, in at most @p
+       * iteration_limit iterations each; records the first one's iterations
+       * for the reuse rule.
+       */
+      void
+      solve_all(const LinearSolveRequest &request,
+                const unsigned int        iteration_limit,
+                LinearSolveReport        &report)
+      {
+        const unsigned int before = report.iterations;
+        solve_with(*amg,
+                   request.matrix,
+                   request.solution,
+                   request.rhs,
+                   request.relative_tolerance,
+                   iteration_limit,
+                   report);
+        last_iterations = report.iterations - before;
+        if (first_solve_after_build)
+          iterations_after_build = last_iterations;
+        first_solve_after_build = false;
+        for (unsigned int k = 0; k < request.additional_solutions.size(); ++k)
+          solve_with(*amg,
+                     request.matrix,
+                     *request.additional_solutions[k],
+                     *request.additional_right_hand_sides[k],
+                     request.relative_tolerance,
+                     iteration_limit,
+                     report);
+      }
+
+      /** @brief A new hierarchy for @p matrix. */
+      void
+      build(const TrilinosWrappers::SparseMatrix &matrix)
+      {
+        amg.reset();
         TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
         amg_data.elliptic              = true;
         amg_data.higher_order_elements = false;
@@ -170,36 +267,33 @@ namespace impm
         // iterations by 30 % (doc/benchmarks/README.md).
         Teuchos::ParameterList              ml_parameters;
         std::unique_ptr<Epetra_MultiVector> unused_modes;
-        amg_data.set_parameters(ml_parameters, unused_modes, request.matrix);
+        amg_data.set_parameters(ml_parameters, unused_modes, matrix);
         AssertDimension(near_null_space.n_rows,
-                        request.matrix.local_range().second -
-                          request.matrix.local_range().first);
+                        matrix.local_range().second -
+                          matrix.local_range().first);
         ml_parameters.set("PDE equations", 1);
         ml_parameters.set("null space: type", "pre-computed");
         ml_parameters.set("null space: dimension",
                           static_cast<int>(near_null_space.n_modes));
         ml_parameters.set("null space: vectors", near_null_space.values.data());
-        amg.initialize(request.matrix, ml_parameters);
-        report.iterations = 0;
-        solve_with(amg,
-                   request.matrix,
-                   request.solution,
-                   request.rhs,
-                   request.relative_tolerance,
-                   report);
-        for (unsigned int k = 0; k < request.additional_solutions.size(); ++k)
-          solve_with(amg,
-                     request.matrix,
-                     *request.additional_solutions[k],
-                     *request.additional_right_hand_sides[k],
-                     request.relative_tolerance,
-                     report);
+        // A system no larger than ML's coarse size is factorised whole: a
+        // new "hierarchy" is a direct solve, no dearer than a kept one's
+        // extra iterations, and exact.
+        one_level =
+          matrix.m() <= static_cast<types::global_dof_index>(
+                          ml_parameters.get<int>("coarse: max size", 128));
+        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        amg->initialize(matrix, ml_parameters);
+        amg_matrix              = &matrix.trilinos_matrix();
+        first_solve_after_build = true;
+        ++n_builds;
       }
 
       /**
        * @brief GMRES on one right-hand side @p rhs from zero, to @p
-       * relative_tolerance times its norm; adds its iterations to @p
-       * report, and throws a one-line message if it does not converge.
+       * relative_tolerance times its norm in at most @p iteration_limit
+       * iterations; adds its iterations to @p report, and throws a
+       * one-line message if it does not converge.
        */
       void
       solve_with(const TrilinosWrappers::PreconditionAMG &amg,
@@ -207,6 +301,7 @@ namespace impm
                  TrilinosWrappers::MPI::Vector           &solution,
                  const TrilinosWrappers::MPI::Vector     &rhs,
                  const double                             relative_tolerance,
+                 const unsigned int                       iteration_limit,
                  LinearSolveReport                       &report) const
       {
         solution = 0.;
@@ -217,7 +312,7 @@ namespace impm
         if (rhs_norm == 0.)
           return;
         const double                  target = relative_tolerance * rhs_norm;
-        SolverControl                 control(max_iterations, target);
+        SolverControl                 control(iteration_limit, target);
         TrilinosWrappers::SolverGMRES solver(control);
         try
           {
@@ -243,8 +338,24 @@ namespace impm
 
     private:
       const unsigned int max_iterations;
+      /** 'Solver/AMG reuse factor'. */
+      const double reuse_factor;
       /** The rigid-body modes of the current system. */
       NearNullSpace near_null_space;
+      /** The current hierarchy (null before the first solve of a system). */
+      std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+      /** The matrix it was built for. */
+      const Epetra_CrsMatrix *amg_matrix = nullptr;
+      /** Whether it is one level (a direct solve): then never kept. */
+      bool one_level = false;
+      /** Whether the next solve is the first with the current hierarchy. */
+      bool first_solve_after_build = false;
+      /** Krylov iterations of the first solve with the current hierarchy. */
+      unsigned int iterations_after_build = 0;
+      /** Krylov iterations of the last solve. */
+      unsigned int last_iterations = 0;
+      /** Solves, hierarchies built and solves repeated, for statistics(). */
+      unsigned int n_solves = 0, n_builds = 0, n_repeated = 0;
     };
 
 

@@ -293,6 +293,9 @@ namespace impm
       unsigned int linear_iterations;
       /** Tie the linear tolerance to the Newton residual. */
       bool adaptive_linear_tolerance;
+      /** Keep the AMG hierarchy while the Krylov iterations stay below this
+       *  factor times those right after it was built (0: never keep). */
+      double amg_reuse_factor;
       /** Cut failed load steps and grow easy ones (else a failure stops). */
       bool step_control;
       /** Smallest load increment, as a fraction of the total load. */

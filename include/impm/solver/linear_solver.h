@@ -107,6 +107,16 @@ namespace impm
       (void)modes;
     }
 
+    /**
+     * @brief One line on how the solver worked over the run (for the
+     * run's last lines), or nothing.
+     */
+    virtual std::string
+    statistics() const
+    {
+      return "";
+    }
+
     /** @brief Solve the system of @p request. */
     LinearSolveReport
     solve(const LinearSolveRequest &request);
