@@ -2,6 +2,7 @@
 """Cell means of the points' pressure, row by row, for a 2D run.
 
 Usage: cell_pressures.py OUTPUT_DIR STEP CELL_SIZE BODY [ROWS] [COLUMNS]
+           [--volume INITIAL_POINT_VOLUME]
 
 Reads points_<STEP>.pvtu of OUTPUT_DIR (written with 'Output/Fields'
 holding stress and body), groups the points of body BODY (1 for 'Body 1')
@@ -11,6 +12,10 @@ CELL_SIZE from the origin) and prints, for the ROWS highest rows of cells
 p = -(sigma_xx + sigma_yy + sigma_zz) / 3 in kPa. A pressure that
 alternates from cell to cell along a row is the checkerboard mode of
 constant-per-cell volume averaging (doc/benchmarks/README.md, "F-bar").
+With --volume (and the field volume written), prints instead the mean
+volume change J - 1 of the points in each cell, in per mille, J being a
+point's volume over INITIAL_POINT_VOLUME (the same for every point of a
+body seeded on a regular lattice: (h / points per cell direction)^2).
 """
 import os
 import sys
@@ -41,27 +46,42 @@ def read_points(directory, step):
 
 
 def main():
-    if len(sys.argv) < 5:
+    arguments = sys.argv[1:]
+    initial_volume = None
+    if "--volume" in arguments:
+        at = arguments.index("--volume")
+        if at + 1 >= len(arguments):
+            sys.exit(__doc__)
+        initial_volume = float(arguments[at + 1])
+        del arguments[at:at + 2]
+    if len(arguments) < 4:
         sys.exit(__doc__)
-    directory, step = sys.argv[1], int(sys.argv[2])
-    cell_size, body = float(sys.argv[3]), int(sys.argv[4])
-    n_rows = int(sys.argv[5]) if len(sys.argv) > 5 else 4
-    n_columns = int(sys.argv[6]) if len(sys.argv) > 6 else 8
+    directory, step = arguments[0], int(arguments[1])
+    cell_size, body = float(arguments[2]), int(arguments[3])
+    n_rows = int(arguments[4]) if len(arguments) > 4 else 4
+    n_columns = int(arguments[5]) if len(arguments) > 5 else 8
     points = read_points(directory, step)
-    for name in ("stress_xx", "stress_yy", "stress_zz", "body"):
+    needed = ("volume", "body") if initial_volume else (
+        "stress_xx", "stress_yy", "stress_zz", "body")
+    for name in needed:
         if name not in points:
             sys.exit("cell_pressures.py: %s has no field '%s' (write it with "
                      "'Output/Fields')" % (directory, name))
     mine = points["body"] == body
-    pressure = -(points["stress_xx"] + points["stress_yy"] +
-                 points["stress_zz"])[mine] / 3.0 / 1000.0
+    if initial_volume:
+        # The printed quantity: J - 1 in per mille.
+        pressure = (points["volume"][mine] / initial_volume - 1.0) * 1000.0
+    else:
+        pressure = -(points["stress_xx"] + points["stress_yy"] +
+                     points["stress_zz"])[mine] / 3.0 / 1000.0
+    number = "%6.2f" if initial_volume else "%6.0f"
     cells = np.floor(points["x"][mine, :2] / cell_size).astype(int)
     top = cells[:, 1].max()
     for row in range(top, top - n_rows, -1):
         means = []
         for column in range(n_columns):
             here = (cells[:, 0] == column) & (cells[:, 1] == row)
-            means.append("%6.0f" % pressure[here].mean() if here.any() else
+            means.append((number % pressure[here].mean()) if here.any() else
                          "     -")
         print("y = %-7g" % (row * cell_size), " ".join(means))
 
