@@ -396,9 +396,9 @@ namespace impm
         "GMRES with AMG, systems of more than 2000 rows (smaller ones ML "
         "factorises whole, anew for every solve): the multigrid hierarchy "
         "built for a load step's matrix preconditions its following Newton "
-        "iterations "
-        "until a solve needs more than this factor times the iterations "
-        "of the solve right after the hierarchy was built (at least 10), "
+        "iterations until a solve needs more than this factor times the "
+        "iterations of the solve right after the hierarchy was built (at "
+        "least 10), "
         "then it is rebuilt; a solve that fails with a kept hierarchy is "
         "repeated with a new one. 0: a new hierarchy for every solve.");
       prm.declare_entry("Step control",

@@ -199,11 +199,13 @@ namespace impm
             // With a kept hierarchy a solve gives up at twice the allowed
             // iterations (and is repeated with a new one) rather than at
             // the iteration limit.
-            solve_all(request,
-                      kept ? std::min<unsigned int>(max_iterations,
-                                                    std::ceil(2 * allowed)) :
-                             max_iterations,
-                      report);
+            // (Compared as doubles: a large factor must not overflow.)
+            const unsigned int limit =
+              kept ?
+                static_cast<unsigned int>(
+                  std::min<double>(max_iterations, std::ceil(2 * allowed))) :
+                max_iterations;
+            solve_all(request, limit, report);
           }
         catch (const std::exception &)
           {
