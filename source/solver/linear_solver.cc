@@ -190,7 +190,6 @@ namespace impm
         const double allowed =
           reuse_factor * std::max(iterations_after_build, 10u);
         const bool kept = reuse_factor > 0. && amg != nullptr && !one_level &&
-                          amg_matrix == &request.matrix.trilinos_matrix() &&
                           last_iterations <= allowed;
         if (!kept)
           build(request.matrix);
@@ -286,7 +285,6 @@ namespace impm
                           ml_parameters.get<int>("coarse: max size", 128));
         amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
         amg->initialize(matrix, ml_parameters);
-        amg_matrix              = &matrix.trilinos_matrix();
         first_solve_after_build = true;
         ++n_builds;
       }
@@ -346,8 +344,6 @@ namespace impm
       NearNullSpace near_null_space;
       /** The current hierarchy (null before the first solve of a system). */
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
-      /** The matrix it was built for. */
-      const Epetra_CrsMatrix *amg_matrix = nullptr;
       /** Whether it is one level (a direct solve): then never kept. */
       bool one_level = false;
       /** Whether the next solve is the first with the current hierarchy. */

@@ -99,7 +99,9 @@ namespace impm
 
     /**
      * @brief The rigid-body modes of the current system
-     * (LoadStepSystem::rigid_body_modes()).
+     * (LoadStepSystem::rigid_body_modes()). Called after every setup of
+     * the system (a new matrix): a solver that keeps something made from
+     * the last matrix (GMRES with AMG: its hierarchy) drops it here.
      */
     virtual void
     set_near_null_space(NearNullSpace modes)
