@@ -323,9 +323,12 @@ namespace impm
     const Tensor<1, dim> &n         = proximity.normal;
     const Tensor<2, dim> &H         = proximity.normal_derivative;
     // The face's share of the body's surface: its area projected on the
-    // tangent plane.
+    // tangent plane. A face at right angles to the surface has none; its
+    // cosine, exactly zero for an unturned body (a quarter model's faces on
+    // a symmetry plane), is of the order of round-off (1e-17) for a turned
+    // one and must not decide whether the face is in contact.
     const double c = -(probe.face_normal * n);
-    probe.active   = proximity.gap <= 0. && c > 0.;
+    probe.active   = proximity.gap <= 0. && c > perpendicular_cosine;
     probe.slipping = false;
     probe.piece    = probe.active ? proximity.piece : 0;
     if (!probe.active)

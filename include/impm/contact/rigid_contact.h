@@ -270,6 +270,13 @@ namespace impm
     descriptions() const;
 
   private:
+    /**
+     * @brief A face whose normal makes a cosine with the body's normal no
+     * larger than this is taken as at right angles to the surface (no
+     * share of it, not in contact): round-off of a turned body's frame.
+     */
+    static constexpr double perpendicular_cosine = 1e-12;
+
     /** @brief A face of a point's domain near a rigid body, in one
      *  attempt. */
     struct Probe
