@@ -150,6 +150,7 @@ namespace impm
       explicit GmresAmgSolver(const Parameters::Solver &parameters)
         : max_iterations(parameters.linear_iterations)
         , reuse_factor(parameters.amg_reuse_factor)
+        , aggregation_threshold(parameters.amg_aggregation_threshold)
       {}
 
       bool
@@ -260,6 +261,7 @@ namespace impm
         amg_data.elliptic              = true;
         amg_data.higher_order_elements = false;
         amg_data.smoother_sweeps       = 2;
+        amg_data.aggregation_threshold = aggregation_threshold;
         // ML's parameters from deal.II's defaults, then the rigid-body
         // modes as the near null space. Aggregation is by row ("PDE
         // equations" = 1): a face condition removes one component of a
@@ -340,6 +342,8 @@ namespace impm
       const unsigned int max_iterations;
       /** 'Solver/AMG reuse factor'. */
       const double reuse_factor;
+      /** 'Solver/AMG aggregation threshold'. */
+      const double aggregation_threshold;
       /** The rigid-body modes of the current system. */
       NearNullSpace near_null_space;
       /** The current hierarchy (null before the first solve of a system). */

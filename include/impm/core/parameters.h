@@ -296,6 +296,9 @@ namespace impm
       /** Keep the AMG hierarchy while the Krylov iterations stay below this
        *  factor times those right after it was built (0: never keep). */
       double amg_reuse_factor;
+      /** ML's aggregation threshold (the connections weaker than this
+       *  fraction of the diagonal are dropped before aggregation). */
+      double amg_aggregation_threshold;
       /** Cut failed load steps and grow easy ones (else a failure stops). */
       bool step_control;
       /** Smallest load increment, as a fraction of the total load. */
