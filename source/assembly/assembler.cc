@@ -235,6 +235,8 @@ namespace impm
         };
         // One support's dense matrix (52 kB in 3D): on the heap.
         const auto stiffness = std::make_unique<PointStiffness<dim>>();
+        std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>
+          group_gradients;
         for (const AssemblyGroup &group : this->system.assembly_groups)
           {
             // The group's matrix over all its support's DoFs; the rows and
@@ -248,9 +250,10 @@ namespace impm
                 [&](const unsigned int p) {
                   return point_steps[p].material->has_symmetric_tangent();
                 });
-            stiffness->reset(point_steps[group.points.front()].support.n_nodes,
+            stiffness->reset(group.n_nodes,
                              symmetric ? TangentSymmetry::major :
                                          TangentSymmetry::general);
+            const unsigned char *node_positions = group.node_positions.data();
             for (const unsigned int p : group.points)
               {
                 const PointStep<dim> &step = point_steps[p];
@@ -267,23 +270,44 @@ namespace impm
                                        step.deformation_increment_inverse,
                                        step.initial_volume),
                     gradient_map(p));
-                stiffness->add(tangent,
-                               gradients_of(p),
-                               group.in_system.data());
+                const Tensor<1, dim> *gradients = gradients_of(p);
+                if (group.merged)
+                  {
+                    // The point's gradients on the group's support, zero
+                    // on the nodes the point's support lacks.
+                    std::fill(group_gradients.begin(),
+                              group_gradients.begin() + group.n_nodes,
+                              Tensor<1, dim>());
+                    for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+                      group_gradients[*node_positions++] = gradients[v];
+                    gradients = group_gradients.data();
+                  }
+                stiffness->add(tangent, gradients, group.in_system.data());
               }
-            block_adder.add(
-              group.rows.data(),
-              group.rows.size(),
-              [&](const unsigned int a, const unsigned int b) {
-                return stiffness->entry(group.local[a], group.local[b]);
-              },
-              matrix);
+            // Read in place: each entry is one gather.
+            stiffness->complete();
+            const unsigned int n = group.rows.size();
+            row_offsets.resize(n);
+            column_offsets.resize(n);
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                row_offsets[a]    = stiffness->row_offset(group.local[a]);
+                column_offsets[a] = stiffness->column_offset(group.local[a]);
+              }
+            block_adder.add(group.rows.data(),
+                            n,
+                            StoredBlock{stiffness->data(),
+                                        row_offsets.data(),
+                                        column_offsets.data()},
+                            matrix,
+                            this->system.off_process_rows);
           }
         if (f_bar != nullptr)
           f_bar->add_patch_stiffness(point_steps,
                                      gradients_of,
                                      gradient_map,
-                                     matrix);
+                                     matrix,
+                                     this->system.off_process_rows);
       }
 
     private:
@@ -295,6 +319,8 @@ namespace impm
         mapped_gradients;
       /** Adds the groups' blocks to the matrix. */
       mutable DenseBlockAdder block_adder;
+      /** Where a group's rows and columns are in its stiffness's data. */
+      mutable std::vector<unsigned int> row_offsets, column_offsets;
     };
   } // namespace
 

@@ -9,6 +9,7 @@
 #include <impm/assembly/ghost_stabilisation.h>
 #include <impm/system/load_step_system.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace impm
@@ -66,6 +67,7 @@ namespace impm
     FEFaceValues<dim>   here(grid.get_mapping(), fe, quadrature, flags);
     FEFaceValues<dim>   there(grid.get_mapping(), fe, quadrature, flags);
     std::vector<double> normal_derivative(2 * n);
+    FullMatrix<double>  matrix;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (!cell->is_locally_owned())
@@ -96,8 +98,7 @@ namespace impm
             there.reinit(neighbor, cell->neighbor_of_neighbor(f));
             const double scale = parameters.penalty_scale * modulus *
                                  cell->extent_in_direction(f / 2);
-            FacePenalty face;
-            face.matrix.reinit(2 * n, 2 * n);
+            matrix.reinit(2 * n, 2 * n);
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               {
                 AssertThrow(here.quadrature_point(q).distance(
@@ -118,16 +119,18 @@ namespace impm
                   for (unsigned int j = 0; j < 2 * n; ++j)
                     if (fe.system_to_component_index(i % n).first ==
                         fe.system_to_component_index(j % n).first)
-                      face.matrix(i, j) += scale * normal_derivative[i] *
-                                           normal_derivative[j] * here.JxW(q);
+                      matrix(i, j) += scale * normal_derivative[i] *
+                                      normal_derivative[j] * here.JxW(q);
               }
-            face.dofs.resize(2 * n);
+            // The two cells share the face's nodes: each DoF once, with
+            // its rows and columns summed.
+            std::vector<unsigned int> cell_dofs(2 * n);
             for (unsigned int i = 0; i < n; ++i)
               {
-                face.dofs[i]     = local(dofs_here[i]);
-                face.dofs[n + i] = local(dofs_there[i]);
+                cell_dofs[i]     = local(dofs_here[i]);
+                cell_dofs[n + i] = local(dofs_there[i]);
               }
-            face_penalties.push_back(std::move(face));
+            face_penalties.push_back(merge_shared_dofs(cell_dofs, matrix));
           }
       }
   }
@@ -160,16 +163,68 @@ namespace impm
     const LoadStepSystem<dim>      &system,
     TrilinosWrappers::SparseMatrix &matrix) const
   {
+    // Each face's block on its DoFs in the linear system, by rows in
+    // ascending system order (as DenseBlockAdder wants them).
+    std::vector<std::pair<types::global_dof_index, unsigned int>> entries;
+    std::vector<types::global_dof_index>                          rows;
+    std::vector<unsigned int>                                     local;
+    std::vector<unsigned int>                                     row_offsets;
     for (const FacePenalty &face : face_penalties)
-      for (unsigned int i = 0; i < face.dofs.size(); ++i)
-        if (system.system_index(face.dofs[i]) != numbers::invalid_dof_index)
-          for (unsigned int j = 0; j < face.dofs.size(); ++j)
-            if (system.system_index(face.dofs[j]) !=
-                  numbers::invalid_dof_index &&
-                face.matrix(i, j) != 0.)
-              matrix.add(system.system_index(face.dofs[i]),
-                         system.system_index(face.dofs[j]),
-                         face.matrix(i, j));
+      {
+        entries.clear();
+        for (unsigned int i = 0; i < face.dofs.size(); ++i)
+          {
+            const auto row = system.system_index(face.dofs[i]);
+            if (row != numbers::invalid_dof_index)
+              entries.emplace_back(row, i);
+          }
+        if (entries.empty())
+          continue;
+        std::sort(entries.begin(), entries.end());
+        rows.resize(entries.size());
+        local.resize(entries.size());
+        for (unsigned int k = 0; k < entries.size(); ++k)
+          {
+            rows[k]  = entries[k].first;
+            local[k] = entries[k].second;
+          }
+        // The face's matrix is row-major.
+        row_offsets.resize(entries.size());
+        for (unsigned int k = 0; k < entries.size(); ++k)
+          row_offsets[k] = local[k] * face.matrix.n();
+        block_adder.add(rows.data(),
+                        rows.size(),
+                        StoredBlock{&face.matrix(0, 0),
+                                    row_offsets.data(),
+                                    local.data()},
+                        matrix,
+                        system.off_process_rows);
+      }
+  }
+
+
+
+  template <int dim>
+  typename GhostStabilisation<dim>::FacePenalty
+  GhostStabilisation<dim>::merge_shared_dofs(
+    const std::vector<unsigned int> &cell_dofs,
+    const FullMatrix<double>        &cell_matrix)
+  {
+    FacePenalty face;
+    face.dofs = cell_dofs;
+    std::sort(face.dofs.begin(), face.dofs.end());
+    face.dofs.erase(std::unique(face.dofs.begin(), face.dofs.end()),
+                    face.dofs.end());
+    std::vector<unsigned int> position(cell_dofs.size());
+    for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+      position[i] =
+        std::lower_bound(face.dofs.begin(), face.dofs.end(), cell_dofs[i]) -
+        face.dofs.begin();
+    face.matrix.reinit(face.dofs.size(), face.dofs.size());
+    for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+      for (unsigned int j = 0; j < cell_dofs.size(); ++j)
+        face.matrix(position[i], position[j]) += cell_matrix(i, j);
+    return face;
   }
 
 

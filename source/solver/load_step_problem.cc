@@ -103,11 +103,13 @@ namespace impm
   {
     TimerOutput::Scope scope(timer, "assembly");
     system.matrix = 0.;
+    system.off_process_rows.zero();
     assembler.add_stiffness(system.matrix);
     if (ghost_stabilisation != nullptr)
       ghost_stabilisation->add_matrix(system, system.matrix);
     if (rigid_contact != nullptr)
       rigid_contact->add_matrix(system, system.matrix);
+    system.off_process_rows.add_to(system.matrix);
     system.matrix.compress(VectorOperation::add);
     if (has_unknowns())
       {

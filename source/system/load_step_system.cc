@@ -135,7 +135,7 @@ namespace impm
     owned.set_size(n_system);
     owned.add_range(offset, offset + n_local_system);
     relevant = owned;
-    make_assembly_groups();
+    make_assembly_groups(material_points);
     std::vector<types::global_dof_index> rows;
     for (const AssemblyGroup &group : assembly_groups)
       rows.insert(rows.end(), group.rows.begin(), group.rows.end());
@@ -195,6 +195,7 @@ namespace impm
                                                communicator,
                                                relevant);
     matrix.reinit(owned, owned, dsp, communicator);
+    off_process_rows.reinit(owned, relevant, dsp, matrix, communicator);
     rhs.reinit(owned, communicator);
     solution.reinit(owned, communicator);
   }
@@ -203,11 +204,23 @@ namespace impm
 
   template <int dim>
   void
-  LoadStepSystem<dim>::make_assembly_groups()
+  LoadStepSystem<dim>::make_assembly_groups(
+    const MaterialPoints<dim> &material_points)
   {
-    // Order the points by their support DoFs (ties by index, so the order
-    // of summation within a group is that of the points), then cut the
-    // order where the support changes.
+    // GIMP: a point's support lies within the 3 nodes per direction around
+    // the node nearest to it (its domain is at most half a cell), so
+    // points are first ordered by that node. Standard MPM: by support
+    // alone.
+    std::vector<std::uint64_t> window(point_steps.size(), 0);
+    if (basis == BasisType::gimp)
+      {
+        unsigned int p = 0;
+        for (const auto &point : material_points.particles())
+          window[p++] = grid.cartesian().node_index(
+            grid.cartesian().nearest_node(point.get_location()));
+      }
+    // Order the points by window and support DoFs (ties by index), then
+    // cut the order where the support changes.
     std::vector<unsigned int> order(point_steps.size());
     std::iota(order.begin(), order.end(), 0u);
     const auto same_support = [this](const unsigned int a,
@@ -220,10 +233,12 @@ namespace impm
     };
     std::sort(order.begin(),
               order.end(),
-              [this](const unsigned int a, const unsigned int b) {
+              [&](const unsigned int a, const unsigned int b) {
+                if (window[a] != window[b])
+                  return window[a] < window[b];
                 const PointStep<dim> &x = point_steps[a], &y = point_steps[b];
                 if (x.support.n_nodes != y.support.n_nodes)
-                  return x.support.n_nodes < y.support.n_nodes;
+                  return x.support.n_nodes > y.support.n_nodes;
                 const unsigned int n = x.support.n_nodes * dim;
                 for (unsigned int k = 0; k < n; ++k)
                   if (x.dofs[k] != y.dofs[k])
@@ -231,33 +246,126 @@ namespace impm
                 return a < b;
               });
 
+    // The runs of one support: [first, last) in order.
+    struct Run
+    {
+      unsigned int first, last;
+      /** The run this one is merged into (itself if none). */
+      unsigned int target;
+    };
+    std::vector<Run>           runs;
+    std::vector<std::uint64_t> larger, smaller;
+    const auto                 sorted_nodes = [this](const unsigned int          p,
+                                     std::vector<std::uint64_t> &nodes) {
+      const PointSupport<dim> &support = point_steps[p].support;
+      nodes.assign(support.nodes.begin(),
+                   support.nodes.begin() + support.n_nodes);
+      std::sort(nodes.begin(), nodes.end());
+    };
+
     assembly_groups.clear();
-    std::vector<std::pair<types::global_dof_index, unsigned int>> entries;
-    for (unsigned int first = 0; first < order.size();)
+    for (unsigned int window_first = 0; window_first < order.size();)
       {
-        unsigned int last = first + 1;
-        while (last < order.size() && same_support(order[first], order[last]))
-          ++last;
-        AssemblyGroup &group = assembly_groups.emplace_back();
-        group.points.assign(order.begin() + first, order.begin() + last);
-        const PointStep<dim> &step = point_steps[order[first]];
-        entries.clear();
-        for (unsigned int k = 0; k < step.support.n_nodes * dim; ++k)
-          if (index_in_system[step.dofs[k]] != numbers::invalid_dof_index)
-            entries.emplace_back(index_in_system[step.dofs[k]], k);
-        std::sort(entries.begin(), entries.end());
-        group.in_system.assign(step.support.n_nodes * dim, 0);
-        for (const auto &[row, k] : entries)
+        unsigned int window_last = window_first + 1;
+        while (window_last < order.size() &&
+               window[order[window_last]] == window[order[window_first]])
+          ++window_last;
+        runs.clear();
+        for (unsigned int first = window_first; first < window_last;)
           {
-            group.rows.push_back(row);
-            group.local.push_back(k);
-            group.in_system[k] = 1;
+            unsigned int last = first + 1;
+            while (last < window_last &&
+                   same_support(order[first], order[last]))
+              ++last;
+            runs.push_back(
+              {first, last, static_cast<unsigned int>(runs.size())});
+            first = last;
           }
-        // Points whose every DoF is constrained add nothing to the matrix.
-        if (group.rows.empty())
-          assembly_groups.pop_back();
-        first = last;
+        // The runs come largest support first: a support that holds a
+        // smaller one takes its points (their stiffness is added to its
+        // block, the missing nodes as zero gradients). The sparsity pattern
+        // is unchanged, the blocks fewer.
+        for (unsigned int i = 0; i < runs.size(); ++i)
+          {
+            if (runs[i].target != i)
+              continue;
+            sorted_nodes(order[runs[i].first], larger);
+            for (unsigned int j = i + 1; j < runs.size(); ++j)
+              if (runs[j].target == j)
+                {
+                  sorted_nodes(order[runs[j].first], smaller);
+                  if (smaller.size() < larger.size() &&
+                      std::includes(larger.begin(),
+                                    larger.end(),
+                                    smaller.begin(),
+                                    smaller.end()))
+                    runs[j].target = i;
+                }
+          }
+        for (unsigned int i = 0; i < runs.size(); ++i)
+          if (runs[i].target == i)
+            add_assembly_group(order, runs, i);
+        window_first = window_last;
       }
+  }
+
+
+
+  template <int dim>
+  template <typename Runs>
+  void
+  LoadStepSystem<dim>::add_assembly_group(
+    const std::vector<unsigned int> &order,
+    const Runs                      &runs,
+    const unsigned int               target)
+  {
+    AssemblyGroup &group = assembly_groups.emplace_back();
+    // The points in index order, so that the order of summation within a
+    // group is that of the points.
+    for (const auto &run : runs)
+      if (run.target == target)
+        group.points.insert(group.points.end(),
+                            order.begin() + run.first,
+                            order.begin() + run.last);
+    std::sort(group.points.begin(), group.points.end());
+
+    // The group's support is that of its first run, which holds the
+    // others': each point's nodes by their position in it.
+    const PointStep<dim> &step  = point_steps[order[runs[target].first]];
+    const auto           &nodes = step.support.nodes;
+    group.n_nodes               = step.support.n_nodes;
+    group.dofs.assign(step.dofs.begin(),
+                      step.dofs.begin() + group.n_nodes * dim);
+    group.merged = false;
+    for (const unsigned int p : group.points)
+      {
+        const PointSupport<dim> &support = point_steps[p].support;
+        group.merged = group.merged || support.n_nodes != group.n_nodes;
+        for (unsigned int v = 0; v < support.n_nodes; ++v)
+          group.node_positions.push_back(
+            static_cast<unsigned char>(std::find(nodes.begin(),
+                                                 nodes.begin() + group.n_nodes,
+                                                 support.nodes[v]) -
+                                       nodes.begin()));
+      }
+    if (!group.merged)
+      group.node_positions.clear();
+
+    std::vector<std::pair<types::global_dof_index, unsigned int>> entries;
+    for (unsigned int k = 0; k < group.n_nodes * dim; ++k)
+      if (index_in_system[group.dofs[k]] != numbers::invalid_dof_index)
+        entries.emplace_back(index_in_system[group.dofs[k]], k);
+    std::sort(entries.begin(), entries.end());
+    group.in_system.assign(group.n_nodes * dim, 0);
+    for (const auto &[row, k] : entries)
+      {
+        group.rows.push_back(row);
+        group.local.push_back(k);
+        group.in_system[k] = 1;
+      }
+    // Points whose every DoF is constrained add nothing to the matrix.
+    if (group.rows.empty())
+      assembly_groups.pop_back();
   }
 
 

@@ -106,13 +106,16 @@ namespace impm
      * @param point_steps The points of the last stress update.
      * @param gradients The statement's gradients of point p.
      * @param gradient_maps As in point_tangent(), of point p.
+     * @param matrix The system matrix.
+     * @param off_process_rows Its rows owned by other processes.
      */
     template <typename Gradients, typename GradientMaps>
     void
     add_patch_stiffness(const std::vector<PointStep<dim>> &point_steps,
                         const Gradients                   &gradients,
                         const GradientMaps                &gradient_maps,
-                        TrilinosWrappers::SparseMatrix    &matrix);
+                        TrilinosWrappers::SparseMatrix    &matrix,
+                        const OffProcessRows              &off_process_rows);
 
     /** @brief One line for the run's list of effects. */
     std::string
@@ -154,7 +157,8 @@ namespace impm
   FBar<dim>::add_patch_stiffness(const std::vector<PointStep<dim>> &point_steps,
                                  const Gradients                   &gradients,
                                  const GradientMaps             &gradient_maps,
-                                 TrilinosWrappers::SparseMatrix &matrix)
+                                 TrilinosWrappers::SparseMatrix &matrix,
+                                 const OffProcessRows &off_process_rows)
   {
     const unsigned int n_patches = mean_jacobian.size();
     for (unsigned int patch = 0; patch < n_patches; ++patch)
@@ -199,7 +203,8 @@ namespace impm
           [&](const unsigned int row, const unsigned int column) {
             return coefficient * a[row] * b[column];
           },
-          matrix);
+          matrix,
+          off_process_rows);
       }
   }
 } // namespace impm

@@ -4,6 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <impm/assembly/dense_block_adder.h>
 #include <impm/core/parameters.h>
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
@@ -38,7 +39,8 @@ namespace impm
     /** @brief A face penalty, fixed during a load step. */
     struct FacePenalty
     {
-      /** Local indices (nodal vectors) of both cells' DoFs. */
+      /** Local indices (nodal vectors) of both cells' DoFs, ascending,
+       *  each once. */
       std::vector<unsigned int> dofs;
       /** The penalty matrix on those DoFs. */
       FullMatrix<double> matrix;
@@ -97,6 +99,17 @@ namespace impm
     /** The largest Young's modulus of the bodies. */
     double                   modulus = 0.;
     std::vector<FacePenalty> face_penalties;
+    /** Adds the faces' blocks to the matrix. */
+    mutable DenseBlockAdder block_adder;
+
+    /**
+     * @brief The penalty of a face from the matrix @p cell_matrix on the
+     * two cells' DoFs @p cell_dofs (those of the shared nodes twice): each
+     * DoF once, its rows and columns summed.
+     */
+    static FacePenalty
+    merge_shared_dofs(const std::vector<unsigned int> &cell_dofs,
+                      const FullMatrix<double>        &cell_matrix);
   };
 } // namespace impm
 

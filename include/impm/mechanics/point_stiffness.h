@@ -124,6 +124,55 @@ namespace impm
     }
 
     /**
+     * @brief Store every entry: with TangentSymmetry::major, copy the node
+     * blocks below the diagonal from their mirrors, so that data() holds
+     * the whole matrix (call after the last add()).
+     */
+    void
+    complete()
+    {
+      if (symmetry != TangentSymmetry::major)
+        return;
+      const unsigned int n = n_nodes * dim;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int v = 0; v < n_nodes; ++v)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int w = 0; w < v; ++w)
+              values[(i * n_nodes + v) * n + k * n_nodes + w] =
+                values[(k * n_nodes + w) * n + i * n_nodes + v];
+      symmetry = TangentSymmetry::general;
+    }
+
+    /**
+     * @brief Where the row of DoF @p a (indexed node * dim + component, as
+     * PointStep::dofs) starts in data().
+     */
+    unsigned int
+    row_offset(const unsigned int a) const
+    {
+      return ((a % dim) * n_nodes + a / dim) * n_nodes * dim;
+    }
+
+    /**
+     * @brief The offset of the column of DoF @p b (indexed as in
+     * row_offset()) from a row's start in data().
+     */
+    unsigned int
+    column_offset(const unsigned int b) const
+    {
+      return (b % dim) * n_nodes + b / dim;
+    }
+
+    /**
+     * @brief The entries, component-major; every one only after complete().
+     */
+    const double *
+    data() const
+    {
+      return values.data();
+    }
+
+    /**
      * @brief The entry in row @p a and column @p b, both indexed
      * node * dim + component (as PointStep::dofs).
      */

@@ -10,6 +10,7 @@
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
 #include <impm/solver/near_null_space.h>
+#include <impm/system/off_process_rows.h>
 #include <impm/system/point_step.h>
 
 #include <cstdint>
@@ -25,16 +26,28 @@ namespace impm
   class FBar;
 
   /**
-   * @brief Points with the same support DoFs: their stiffness is summed in
-   * one dense local matrix and added to the system matrix once (fixed
-   * during a load step).
+   * @brief Points whose stiffness is summed in one dense local matrix on
+   * one support and added to the system matrix once (fixed during a load
+   * step): the points of one support and, with GIMP, those of the same
+   * window of 3 nodes per direction whose supports that support holds
+   * (LoadStepSystem::make_assembly_groups()).
    */
   struct AssemblyGroup
   {
-    /** Indices into the point steps of the group's points. */
+    /** Indices into the point steps of the group's points, ascending. */
     std::vector<unsigned int> points;
-    /** Positions in PointStep::dofs of the DoFs in the linear system, in
-     *  the order of rows. */
+    /** Number of nodes of the group's support. */
+    unsigned int n_nodes = 0;
+    /** Local indices of the support's DoFs in the nodal vectors, node by
+     *  node (as PointStep::dofs). */
+    std::vector<unsigned int> dofs;
+    /** Whether some point's support is smaller than the group's. */
+    bool merged = false;
+    /** If merged: for each point in turn, the position of each node of its
+     *  support in the group's support; empty otherwise. */
+    std::vector<unsigned char> node_positions;
+    /** Positions in dofs of the DoFs in the linear system, in the order of
+     *  rows. */
     std::vector<unsigned int> local;
     /** Their indices in the linear system, ascending. */
     std::vector<types::global_dof_index> rows;
@@ -173,6 +186,9 @@ namespace impm
 
     /** @brief The system matrix. */
     TrilinosWrappers::SparseMatrix matrix;
+    /** @brief The matrix's rows that this process assembles and another
+     *  owns, added to the matrix by LoadStepProblem after each assembly. */
+    OffProcessRows off_process_rows;
     /** @brief The right-hand side (the residual). */
     TrilinosWrappers::MPI::Vector rhs;
     /** @brief The solution (the Newton correction). */
@@ -197,9 +213,27 @@ namespace impm
     /** The fingerprint of the pattern the matrix has (0: none yet). */
     std::uint64_t matrix_fingerprint = 0;
 
-    /** Order the points by support and cut the order into groups. */
+    /**
+     * Group the points: order them by window (GIMP: the node nearest to
+     * each) and support, cut the order where the support changes, and
+     * within a window let each support take the points of the smaller
+     * supports it holds (so the sparsity pattern is that of the supports
+     * alone, and a deformed GIMP body, where nearly every point has a
+     * support of its own, adds about one block per node instead of one per
+     * point).
+     */
     void
-    make_assembly_groups();
+    make_assembly_groups(const MaterialPoints<dim> &material_points);
+
+    /**
+     * Add the group of the points of the runs of @p order whose target is
+     * @p target (see make_assembly_groups()).
+     */
+    template <typename Runs>
+    void
+    add_assembly_group(const std::vector<unsigned int> &order,
+                       const Runs                      &runs,
+                       const unsigned int               target);
 
     const BackgroundGrid<dim> &grid;
     const MPI_Comm             communicator;
