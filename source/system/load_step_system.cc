@@ -8,6 +8,7 @@
 #include <impm/system/load_step_system.h>
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -135,7 +136,7 @@ namespace impm
     owned.set_size(n_system);
     owned.add_range(offset, offset + n_local_system);
     relevant = owned;
-    make_assembly_groups(material_points);
+    make_assembly_groups();
     std::vector<types::global_dof_index> rows;
     for (const AssemblyGroup &group : assembly_groups)
       rows.insert(rows.end(), group.rows.begin(), group.rows.end());
@@ -204,23 +205,10 @@ namespace impm
 
   template <int dim>
   void
-  LoadStepSystem<dim>::make_assembly_groups(
-    const MaterialPoints<dim> &material_points)
+  LoadStepSystem<dim>::make_assembly_groups()
   {
-    // GIMP: a point's support lies within the 3 nodes per direction around
-    // the node nearest to it (its domain is at most half a cell), so
-    // points are first ordered by that node. Standard MPM: by support
-    // alone.
-    std::vector<std::uint64_t> window(point_steps.size(), 0);
-    if (basis == BasisType::gimp)
-      {
-        unsigned int p = 0;
-        for (const auto &point : material_points.particles())
-          window[p++] = grid.cartesian().node_index(
-            grid.cartesian().nearest_node(point.get_location()));
-      }
-    // Order the points by window and support DoFs (ties by index), then
-    // cut the order where the support changes.
+    // Order the points by support, largest first (ties by index), then cut
+    // the order into runs of one support.
     std::vector<unsigned int> order(point_steps.size());
     std::iota(order.begin(), order.end(), 0u);
     const auto same_support = [this](const unsigned int a,
@@ -233,9 +221,7 @@ namespace impm
     };
     std::sort(order.begin(),
               order.end(),
-              [&](const unsigned int a, const unsigned int b) {
-                if (window[a] != window[b])
-                  return window[a] < window[b];
+              [this](const unsigned int a, const unsigned int b) {
                 const PointStep<dim> &x = point_steps[a], &y = point_steps[b];
                 if (x.support.n_nodes != y.support.n_nodes)
                   return x.support.n_nodes > y.support.n_nodes;
@@ -245,78 +231,130 @@ namespace impm
                     return x.dofs[k] < y.dofs[k];
                 return a < b;
               });
-
-    // The runs of one support: [first, last) in order.
-    struct Run
-    {
-      unsigned int first, last;
-      /** The run this one is merged into (itself if none). */
-      unsigned int target;
-    };
-    std::vector<Run>           runs;
-    std::vector<std::uint64_t> larger, smaller;
-    const auto                 sorted_nodes = [this](const unsigned int          p,
-                                     std::vector<std::uint64_t> &nodes) {
-      const PointSupport<dim> &support = point_steps[p].support;
-      nodes.assign(support.nodes.begin(),
-                   support.nodes.begin() + support.n_nodes);
-      std::sort(nodes.begin(), nodes.end());
-    };
-
-    assembly_groups.clear();
-    for (unsigned int window_first = 0; window_first < order.size();)
+    std::vector<SupportRun> runs;
+    for (unsigned int first = 0; first < order.size();)
       {
-        unsigned int window_last = window_first + 1;
-        while (window_last < order.size() &&
-               window[order[window_last]] == window[order[window_first]])
-          ++window_last;
-        runs.clear();
-        for (unsigned int first = window_first; first < window_last;)
-          {
-            unsigned int last = first + 1;
-            while (last < window_last &&
-                   same_support(order[first], order[last]))
-              ++last;
-            runs.push_back(
-              {first, last, static_cast<unsigned int>(runs.size())});
-            first = last;
-          }
-        // The runs come largest support first: a support that holds a
-        // smaller one takes its points (their stiffness is added to its
-        // block, the missing nodes as zero gradients). The sparsity pattern
-        // is unchanged, the blocks fewer.
-        for (unsigned int i = 0; i < runs.size(); ++i)
-          {
-            if (runs[i].target != i)
-              continue;
-            sorted_nodes(order[runs[i].first], larger);
-            for (unsigned int j = i + 1; j < runs.size(); ++j)
-              if (runs[j].target == j)
-                {
-                  sorted_nodes(order[runs[j].first], smaller);
-                  if (smaller.size() < larger.size() &&
-                      std::includes(larger.begin(),
-                                    larger.end(),
-                                    smaller.begin(),
-                                    smaller.end()))
-                    runs[j].target = i;
-                }
-          }
-        for (unsigned int i = 0; i < runs.size(); ++i)
-          if (runs[i].target == i)
-            add_assembly_group(order, runs, i);
-        window_first = window_last;
+        unsigned int last = first + 1;
+        while (last < order.size() && same_support(order[first], order[last]))
+          ++last;
+        const unsigned int run = runs.size();
+        runs.push_back({first, last, run});
+        first = last;
       }
+
+    // A support is a box of nodes (a GIMP point's spans at most 3 per
+    // direction). A run whose box lies in the box of a larger run joins
+    // it: its points' stiffness is added to that block, the missing nodes
+    // as zero gradients. The sparsity pattern is unchanged and the blocks
+    // fewer: in a deformed GIMP body nearly every point has a support of
+    // its own, but most lie in the 3 x ... x 3 support of a neighbour.
+    // Standard MPM's supports are cells and never hold one another.
+    const CartesianGrid<dim> &cartesian = grid.cartesian();
+    using Box          = std::pair<std::array<unsigned int, dim>,
+                          std::array<unsigned int, dim>>; // lowest, highest
+    const auto box_key = [&](const Box &box) {
+      std::uint64_t key = cartesian.node_index(box.first);
+      for (unsigned int d = 0; d < dim; ++d)
+        key = 3 * key + (box.second[d] - box.first[d]);
+      return key;
+    };
+    std::vector<Box>                                    boxes(runs.size());
+    std::vector<std::pair<std::uint64_t, unsigned int>> run_of_box;
+    std::vector<bool>                                   is_box(runs.size());
+    for (unsigned int r = 0; r < runs.size(); ++r)
+      {
+        const PointSupport<dim> &support =
+          point_steps[order[runs[r].first]].support;
+        Box &box = boxes[r];
+        box.first.fill(std::numeric_limits<unsigned int>::max());
+        box.second.fill(0);
+        for (unsigned int v = 0; v < support.n_nodes; ++v)
+          {
+            std::uint64_t index = support.nodes[v];
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const unsigned int i = index % cartesian.n_nodes(d);
+                index /= cartesian.n_nodes(d);
+                box.first[d]  = std::min(box.first[d], i);
+                box.second[d] = std::max(box.second[d], i);
+              }
+          }
+        unsigned int n_in_box = 1;
+        bool         narrow   = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            n_in_box *= box.second[d] - box.first[d] + 1;
+            narrow = narrow && box.second[d] - box.first[d] <= 2;
+          }
+        is_box[r] = narrow && n_in_box == support.n_nodes;
+        if (is_box[r])
+          run_of_box.emplace_back(box_key(box), r);
+      }
+    std::sort(run_of_box.begin(), run_of_box.end());
+    // Runs come largest first, so a run's container has found its own
+    // (the largest box holding it) before.
+    for (unsigned int r = 0; r < runs.size(); ++r)
+      {
+        if (!is_box[r])
+          continue;
+        // The boxes of up to 3 nodes per direction that hold this one:
+        // per direction, the lowest node may go down by 0 to 2 and the
+        // highest up, to a width of at most 3.
+        unsigned int best = r,
+                     best_nodes =
+                       point_steps[order[runs[r].first]].support.n_nodes;
+        std::array<unsigned int, dim> shift;
+        const unsigned int            n_shifts = Utilities::pow(9u, dim);
+        for (unsigned int code = 0; code < n_shifts; ++code)
+          {
+            Box          candidate = boxes[r];
+            bool         valid     = true;
+            unsigned int c         = code;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                shift[d] = c % 9;
+                c /= 9;
+                const unsigned int down = shift[d] % 3, up = shift[d] / 3;
+                valid = valid && candidate.first[d] >= down;
+                if (!valid)
+                  break;
+                candidate.first[d] -= down;
+                candidate.second[d] += up;
+                valid = candidate.second[d] - candidate.first[d] <= 2;
+              }
+            if (!valid || code == 0)
+              continue;
+            const auto found =
+              std::lower_bound(run_of_box.begin(),
+                               run_of_box.end(),
+                               std::make_pair(box_key(candidate), 0u));
+            if (found == run_of_box.end() || found->first != box_key(candidate))
+              continue;
+            const unsigned int container = runs[found->second].target;
+            const unsigned int nodes =
+              point_steps[order[runs[container].first]].support.n_nodes;
+            if (nodes > best_nodes ||
+                (nodes == best_nodes && container < best && best != r))
+              {
+                best       = container;
+                best_nodes = nodes;
+              }
+          }
+        runs[r].target = best;
+      }
+    assembly_groups.clear();
+    for (unsigned int r = 0; r < runs.size(); ++r)
+      if (runs[r].target == r)
+        add_assembly_group(order, runs, r);
   }
 
 
 
   template <int dim>
-  template <typename Runs>
   void
   LoadStepSystem<dim>::add_assembly_group(
     const std::vector<unsigned int> &order,
-    const Runs                      &runs,
+    const std::vector<SupportRun>   &runs,
     const unsigned int               target)
   {
     AssemblyGroup &group = assembly_groups.emplace_back();

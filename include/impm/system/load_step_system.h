@@ -28,8 +28,7 @@ namespace impm
   /**
    * @brief Points whose stiffness is summed in one dense local matrix on
    * one support and added to the system matrix once (fixed during a load
-   * step): the points of one support and, with GIMP, those of the same
-   * window of 3 nodes per direction whose supports that support holds
+   * step): the points of one support and those whose supports it holds
    * (LoadStepSystem::make_assembly_groups()).
    */
   struct AssemblyGroup
@@ -214,25 +213,32 @@ namespace impm
     std::uint64_t matrix_fingerprint = 0;
 
     /**
-     * Group the points: order them by window (GIMP: the node nearest to
-     * each) and support, cut the order where the support changes, and
-     * within a window let each support take the points of the smaller
-     * supports it holds (so the sparsity pattern is that of the supports
-     * alone, and a deformed GIMP body, where nearly every point has a
-     * support of its own, adds about one block per node instead of one per
-     * point).
+     * The points of one support: positions [first, last) of an order of
+     * the points, and the run whose group they join (themselves if none).
+     */
+    struct SupportRun
+    {
+      unsigned int first, last, target;
+    };
+
+    /**
+     * Group the points: order them by support, cut the order into runs of
+     * one support, and let each run join the largest run whose support
+     * (a box of nodes) holds its own (so the sparsity pattern is that of
+     * the supports alone, and a deformed GIMP body, where nearly every
+     * point has a support of its own, adds about one block per node
+     * instead of one per point).
      */
     void
-    make_assembly_groups(const MaterialPoints<dim> &material_points);
+    make_assembly_groups();
 
     /**
      * Add the group of the points of the runs of @p order whose target is
      * @p target (see make_assembly_groups()).
      */
-    template <typename Runs>
     void
     add_assembly_group(const std::vector<unsigned int> &order,
-                       const Runs                      &runs,
+                       const std::vector<SupportRun>   &runs,
                        const unsigned int               target);
 
     const BackgroundGrid<dim> &grid;
