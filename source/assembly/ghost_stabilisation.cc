@@ -131,6 +131,14 @@ namespace impm
                 cell_dofs[n + i] = local(dofs_there[i]);
               }
             face_penalties.push_back(merge_shared_dofs(cell_dofs, matrix));
+            FacePenalty &face = face_penalties.back();
+            face.components.resize(face.dofs.size());
+            for (unsigned int i = 0; i < 2 * n; ++i)
+              face.components[std::lower_bound(face.dofs.begin(),
+                                               face.dofs.end(),
+                                               cell_dofs[i]) -
+                              face.dofs.begin()] =
+                fe.system_to_component_index(i % n).first;
           }
       }
   }
@@ -163,43 +171,47 @@ namespace impm
     const LoadStepSystem<dim>      &system,
     TrilinosWrappers::SparseMatrix &matrix) const
   {
-    // Each face's block on its DoFs in the linear system, by rows in
-    // ascending system order (as DenseBlockAdder wants them).
+    // Each face's block on its DoFs in the linear system, one component at
+    // a time (the penalty couples a component only to itself: a third of
+    // the block in 3D), by rows in ascending system order (as
+    // DenseBlockAdder wants them).
     std::vector<std::pair<types::global_dof_index, unsigned int>> entries;
     std::vector<types::global_dof_index>                          rows;
     std::vector<unsigned int>                                     local;
     std::vector<unsigned int>                                     row_offsets;
     for (const FacePenalty &face : face_penalties)
-      {
-        entries.clear();
-        for (unsigned int i = 0; i < face.dofs.size(); ++i)
-          {
-            const auto row = system.system_index(face.dofs[i]);
-            if (row != numbers::invalid_dof_index)
-              entries.emplace_back(row, i);
-          }
-        if (entries.empty())
-          continue;
-        std::sort(entries.begin(), entries.end());
-        rows.resize(entries.size());
-        local.resize(entries.size());
-        for (unsigned int k = 0; k < entries.size(); ++k)
-          {
-            rows[k]  = entries[k].first;
-            local[k] = entries[k].second;
-          }
-        // The face's matrix is row-major.
-        row_offsets.resize(entries.size());
-        for (unsigned int k = 0; k < entries.size(); ++k)
-          row_offsets[k] = local[k] * face.matrix.n();
-        block_adder.add(rows.data(),
-                        rows.size(),
-                        StoredBlock{&face.matrix(0, 0),
-                                    row_offsets.data(),
-                                    local.data()},
-                        matrix,
-                        system.off_process_rows);
-      }
+      for (unsigned int component = 0; component < dim; ++component)
+        {
+          entries.clear();
+          for (unsigned int i = 0; i < face.dofs.size(); ++i)
+            {
+              const auto row = system.system_index(face.dofs[i]);
+              if (row != numbers::invalid_dof_index &&
+                  face.components[i] == component)
+                entries.emplace_back(row, i);
+            }
+          if (entries.empty())
+            continue;
+          std::sort(entries.begin(), entries.end());
+          rows.resize(entries.size());
+          local.resize(entries.size());
+          for (unsigned int k = 0; k < entries.size(); ++k)
+            {
+              rows[k]  = entries[k].first;
+              local[k] = entries[k].second;
+            }
+          // The face's matrix is row-major.
+          row_offsets.resize(entries.size());
+          for (unsigned int k = 0; k < entries.size(); ++k)
+            row_offsets[k] = local[k] * face.matrix.n();
+          block_adder.add(rows.data(),
+                          rows.size(),
+                          StoredBlock{&face.matrix(0, 0),
+                                      row_offsets.data(),
+                                      local.data()},
+                          matrix,
+                          system.off_process_rows);
+        }
   }
 
 

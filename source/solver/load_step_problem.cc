@@ -102,15 +102,14 @@ namespace impm
   LoadStepProblem<dim>::assemble_matrix()
   {
     TimerOutput::Scope scope(timer, "assembly");
-    system.matrix = 0.;
-    system.off_process_rows.zero();
+    system.zero_matrix();
     assembler.add_stiffness(system.matrix);
     if (ghost_stabilisation != nullptr)
       ghost_stabilisation->add_matrix(system, system.matrix);
+    // The contact adds its entries through the matrix's add().
     if (rigid_contact != nullptr)
       rigid_contact->add_matrix(system, system.matrix);
-    system.off_process_rows.add_to(system.matrix);
-    system.matrix.compress(VectorOperation::add);
+    system.finish_matrix(rigid_contact != nullptr);
     if (has_unknowns())
       {
         std::vector<NodalVector> columns, rows;

@@ -69,6 +69,7 @@ namespace impm
   void
   OffProcessRows::zero()
   {
+    added_through_matrix = false;
     if (rows != nullptr)
       rows->PutScalar(0.);
   }

@@ -218,6 +218,7 @@ namespace impm
               other.add_row(*other_rows, local_row, indices, a, entry);
               continue;
             }
+          off_process_rows.note_added_through_matrix();
           row_values.resize(n);
           for (unsigned int b = 0; b < n; ++b)
             row_values[b] = entry(a, b);

@@ -42,7 +42,9 @@ namespace impm
       /** Local indices (nodal vectors) of both cells' DoFs, ascending,
        *  each once. */
       std::vector<unsigned int> dofs;
-      /** The penalty matrix on those DoFs. */
+      /** The vector component of each of those DoFs. */
+      std::vector<unsigned char> components;
+      /** The penalty matrix on those DoFs (zero between components). */
       FullMatrix<double> matrix;
     };
 

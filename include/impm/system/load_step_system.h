@@ -183,10 +183,27 @@ namespace impm
     add_to_nodal(const TrilinosWrappers::MPI::Vector &system_vector,
                  NodalVector                         &nodal) const;
 
+    /**
+     * @brief Set the matrix and its off-process rows to zero before an
+     * assembly, in place (deal.II's operator= would first compress(), an
+     * exchange with every process).
+     */
+    void
+    zero_matrix();
+
+    /**
+     * @brief Finish an assembly: send the off-process rows to their owners
+     * and, if on any process a row went through the matrix's add() (@p
+     * added_through_matrix, or DenseBlockAdder's rows that the off-process
+     * rows do not hold), let deal.II's compress() exchange those. Collective.
+     */
+    void
+    finish_matrix(const bool added_through_matrix);
+
     /** @brief The system matrix. */
     TrilinosWrappers::SparseMatrix matrix;
     /** @brief The matrix's rows that this process assembles and another
-     *  owns, added to the matrix by LoadStepProblem after each assembly. */
+     *  owns, added to the matrix by finish_matrix() after each assembly. */
     OffProcessRows off_process_rows;
     /** @brief The right-hand side (the residual). */
     TrilinosWrappers::MPI::Vector rhs;

@@ -62,6 +62,24 @@ namespace impm
     zero();
 
     /**
+     * @brief Note that a row these rows do not hold went through the
+     * system matrix's add() (DenseBlockAdder's way for such a row), so that
+     * the matrix needs deal.II's compress(); until the next zero().
+     */
+    void
+    note_added_through_matrix() const
+    {
+      added_through_matrix = true;
+    }
+
+    /** @brief Whether note_added_through_matrix() was called since zero(). */
+    bool
+    any_added_through_matrix() const
+    {
+      return added_through_matrix;
+    }
+
+    /**
      * @brief The rows, for adding to in place (their values are changed
      * through the matrix's row views). Only if active().
      */
@@ -85,6 +103,8 @@ namespace impm
     std::unique_ptr<Epetra_CrsMatrix> rows;
     /** From the row map to the system matrix's row map. */
     std::unique_ptr<Epetra_Export> exporter;
+    /** See note_added_through_matrix(). */
+    mutable bool added_through_matrix = false;
   };
 } // namespace impm
 
