@@ -10,6 +10,7 @@
 #include <impm/system/load_step_system.h>
 
 #include <algorithm>
+#include <array>
 #include <sstream>
 
 namespace impm
@@ -67,7 +68,11 @@ namespace impm
     FEFaceValues<dim>   here(grid.get_mapping(), fe, quadrature, flags);
     FEFaceValues<dim>   there(grid.get_mapping(), fe, quadrature, flags);
     std::vector<double> normal_derivative(2 * n);
-    FullMatrix<double>  matrix;
+    // Per face number: the penalty matrix of the last cell extents.
+    std::array<FullMatrix<double>, GeometryInfo<dim>::faces_per_cell>
+                                                                  face_matrices;
+    std::array<Tensor<1, dim>, GeometryInfo<dim>::faces_per_cell> face_extents;
+    std::array<bool, GeometryInfo<dim>::faces_per_cell> face_matrix_known{};
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (!cell->is_locally_owned())
@@ -94,34 +99,48 @@ namespace impm
             if (!in_use(dofs_there))
               continue;
 
-            here.reinit(cell, f);
-            there.reinit(neighbor, cell->neighbor_of_neighbor(f));
-            const double scale = parameters.penalty_scale * modulus *
-                                 cell->extent_in_direction(f / 2);
-            matrix.reinit(2 * n, 2 * n);
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
+            // The matrix depends on the face's number and the cell's
+            // extents only (Cartesian cells, Q1): computed once for each.
+            Tensor<1, dim> extents;
+            for (unsigned int d = 0; d < dim; ++d)
+              extents[d] = cell->extent_in_direction(d);
+            // (Equal to round-off: the extents are vertex differences.)
+            if (!face_matrix_known[f] ||
+                (face_extents[f] - extents).norm() > 1e-12 * extents.norm())
               {
-                AssertThrow(here.quadrature_point(q).distance(
-                              there.quadrature_point(q)) <
-                              1e-10 * cell->diameter(),
-                            ExcInternalError());
-                const Tensor<1, dim> normal = here.normal_vector(q);
-                for (unsigned int i = 0; i < n; ++i)
+                here.reinit(cell, f);
+                there.reinit(neighbor, cell->neighbor_of_neighbor(f));
+                const double scale = parameters.penalty_scale * modulus *
+                                     cell->extent_in_direction(f / 2);
+                FullMatrix<double> &matrix = face_matrices[f];
+                matrix.reinit(2 * n, 2 * n);
+                for (unsigned int q = 0; q < quadrature.size(); ++q)
                   {
-                    const unsigned int c =
-                      fe.system_to_component_index(i).first;
-                    normal_derivative[i] =
-                      here.shape_grad_component(i, q, c) * normal;
-                    normal_derivative[n + i] =
-                      -there.shape_grad_component(i, q, c) * normal;
+                    AssertThrow(here.quadrature_point(q).distance(
+                                  there.quadrature_point(q)) <
+                                  1e-10 * cell->diameter(),
+                                ExcInternalError());
+                    const Tensor<1, dim> normal = here.normal_vector(q);
+                    for (unsigned int i = 0; i < n; ++i)
+                      {
+                        const unsigned int c =
+                          fe.system_to_component_index(i).first;
+                        normal_derivative[i] =
+                          here.shape_grad_component(i, q, c) * normal;
+                        normal_derivative[n + i] =
+                          -there.shape_grad_component(i, q, c) * normal;
+                      }
+                    for (unsigned int i = 0; i < 2 * n; ++i)
+                      for (unsigned int j = 0; j < 2 * n; ++j)
+                        if (fe.system_to_component_index(i % n).first ==
+                            fe.system_to_component_index(j % n).first)
+                          matrix(i, j) += scale * normal_derivative[i] *
+                                          normal_derivative[j] * here.JxW(q);
                   }
-                for (unsigned int i = 0; i < 2 * n; ++i)
-                  for (unsigned int j = 0; j < 2 * n; ++j)
-                    if (fe.system_to_component_index(i % n).first ==
-                        fe.system_to_component_index(j % n).first)
-                      matrix(i, j) += scale * normal_derivative[i] *
-                                      normal_derivative[j] * here.JxW(q);
+                face_matrix_known[f] = true;
+                face_extents[f]      = extents;
               }
+            const FullMatrix<double> &matrix = face_matrices[f];
             // The two cells share the face's nodes: each DoF once, with
             // its rows and columns summed.
             std::vector<unsigned int> cell_dofs(2 * n);

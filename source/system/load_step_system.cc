@@ -155,10 +155,18 @@ namespace impm
       std::sort(indices.begin(), indices.end());
       return indices;
     };
+    // All at once (one index at a time shifts the set's ranges: 3 % of
+    // the 3D collapse at h = 0.5 m).
     if (ghost_stabilisation != nullptr)
-      for (const auto &face : ghost_stabilisation->faces())
-        for (const auto index : face_indices(face.dofs))
-          relevant.add_index(index);
+      {
+        rows.clear();
+        for (const auto &face : ghost_stabilisation->faces())
+          for (const auto index : face_indices(face.dofs))
+            rows.push_back(index);
+        std::sort(rows.begin(), rows.end());
+        rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+        relevant.add_indices(rows.begin(), rows.end());
+      }
     relevant.compress();
 
     // The sparsity pattern comes from the points' supports, the stabilised
@@ -298,32 +306,35 @@ namespace impm
         if (!is_box[r])
           continue;
         // The boxes of up to 3 nodes per direction that hold this one:
-        // per direction, the lowest node may go down by 0 to 2 and the
-        // highest up, to a width of at most 3.
+        // per direction, the lowest node may go down and the highest up,
+        // to a width of at most 3 (each combination of these widenings).
         unsigned int best = r,
                      best_nodes =
                        point_steps[order[runs[r].first]].support.n_nodes;
-        std::array<unsigned int, dim> shift;
-        const unsigned int            n_shifts = Utilities::pow(9u, dim);
-        for (unsigned int code = 0; code < n_shifts; ++code)
+        std::array<std::vector<std::pair<unsigned int, unsigned int>>, dim>
+                     widenings;
+        unsigned int n_candidates = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const unsigned int width = boxes[r].second[d] - boxes[r].first[d];
+            for (unsigned int down = 0; down <= 2 - width; ++down)
+              for (unsigned int up = 0; down + up <= 2 - width; ++up)
+                if (boxes[r].first[d] >= down)
+                  widenings[d].emplace_back(down, up);
+            n_candidates *= widenings[d].size();
+          }
+        // Candidate 0 widens nothing: the box itself.
+        for (unsigned int code = 1; code < n_candidates; ++code)
           {
             Box          candidate = boxes[r];
-            bool         valid     = true;
             unsigned int c         = code;
             for (unsigned int d = 0; d < dim; ++d)
               {
-                shift[d] = c % 9;
-                c /= 9;
-                const unsigned int down = shift[d] % 3, up = shift[d] / 3;
-                valid = valid && candidate.first[d] >= down;
-                if (!valid)
-                  break;
+                const auto [down, up] = widenings[d][c % widenings[d].size()];
+                c /= widenings[d].size();
                 candidate.first[d] -= down;
                 candidate.second[d] += up;
-                valid = candidate.second[d] - candidate.first[d] <= 2;
               }
-            if (!valid || code == 0)
-              continue;
             const auto found =
               std::lower_bound(run_of_box.begin(),
                                run_of_box.end(),

@@ -86,6 +86,13 @@ namespace impm
 
       for (unsigned int v = 0; v < n_nodes; ++v)
         {
+          // A node without gradient (one that the point's support lacks,
+          // in a group's larger support) adds nothing to its rows.
+          bool zero_gradient = true;
+          for (unsigned int j = 0; j < dim; ++j)
+            zero_gradient = zero_gradient && g[j][v] == 0.;
+          if (zero_gradient)
+            continue;
           // B[i][k][q] = grad_v[j] A[i][j][k][q]
           double B[dim][dim][dim] = {};
           for (unsigned int i = 0; i < dim; ++i)
