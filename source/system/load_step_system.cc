@@ -311,17 +311,20 @@ namespace impm
         unsigned int best = r,
                      best_nodes =
                        point_steps[order[runs[r].first]].support.n_nodes;
-        std::array<std::vector<std::pair<unsigned int, unsigned int>>, dim>
-                     widenings;
-        unsigned int n_candidates = 1;
+        // (At most 6 per direction: a box of one node widened by 0 to 2.)
+        std::array<std::array<std::pair<unsigned int, unsigned int>, 6>, dim>
+                                      widenings;
+        std::array<unsigned int, dim> n_widenings;
+        unsigned int                  n_candidates = 1;
         for (unsigned int d = 0; d < dim; ++d)
           {
             const unsigned int width = boxes[r].second[d] - boxes[r].first[d];
+            n_widenings[d]           = 0;
             for (unsigned int down = 0; down <= 2 - width; ++down)
               for (unsigned int up = 0; down + up <= 2 - width; ++up)
                 if (boxes[r].first[d] >= down)
-                  widenings[d].emplace_back(down, up);
-            n_candidates *= widenings[d].size();
+                  widenings[d][n_widenings[d]++] = {down, up};
+            n_candidates *= n_widenings[d];
           }
         // Candidate 0 widens nothing: the box itself.
         for (unsigned int code = 1; code < n_candidates; ++code)
@@ -330,8 +333,8 @@ namespace impm
             unsigned int c         = code;
             for (unsigned int d = 0; d < dim; ++d)
               {
-                const auto [down, up] = widenings[d][c % widenings[d].size()];
-                c /= widenings[d].size();
+                const auto [down, up] = widenings[d][c % n_widenings[d]];
+                c /= n_widenings[d];
                 candidate.first[d] -= down;
                 candidate.second[d] += up;
               }
@@ -353,10 +356,28 @@ namespace impm
           }
         runs[r].target = best;
       }
+    // The runs of each group: by target, each target first.
+    std::vector<unsigned int> by_target(runs.size());
+    std::iota(by_target.begin(), by_target.end(), 0u);
+    std::stable_sort(by_target.begin(),
+                     by_target.end(),
+                     [&](const unsigned int a, const unsigned int b) {
+                       return runs[a].target < runs[b].target;
+                     });
     assembly_groups.clear();
-    for (unsigned int r = 0; r < runs.size(); ++r)
-      if (runs[r].target == r)
-        add_assembly_group(order, runs, r);
+    for (unsigned int first = 0; first < by_target.size();)
+      {
+        unsigned int last = first + 1;
+        while (last < by_target.size() &&
+               runs[by_target[last]].target == runs[by_target[first]].target)
+          ++last;
+        add_assembly_group(order,
+                           runs,
+                           ArrayView<const unsigned int>(by_target.data() +
+                                                           first,
+                                                         last - first));
+        first = last;
+      }
   }
 
 
@@ -364,18 +385,18 @@ namespace impm
   template <int dim>
   void
   LoadStepSystem<dim>::add_assembly_group(
-    const std::vector<unsigned int> &order,
-    const std::vector<SupportRun>   &runs,
-    const unsigned int               target)
+    const std::vector<unsigned int>     &order,
+    const std::vector<SupportRun>       &runs,
+    const ArrayView<const unsigned int> &members)
   {
-    AssemblyGroup &group = assembly_groups.emplace_back();
+    const unsigned int target = runs[members[0]].target;
+    AssemblyGroup     &group  = assembly_groups.emplace_back();
     // The points in index order, so that the order of summation within a
     // group is that of the points.
-    for (const auto &run : runs)
-      if (run.target == target)
-        group.points.insert(group.points.end(),
-                            order.begin() + run.first,
-                            order.begin() + run.last);
+    for (const unsigned int r : members)
+      group.points.insert(group.points.end(),
+                          order.begin() + runs[r].first,
+                          order.begin() + runs[r].last);
     std::sort(group.points.begin(), group.points.end());
 
     // The group's support is that of its first run, which holds the

@@ -1,6 +1,7 @@
 #ifndef impm_system_load_step_system_h
 #define impm_system_load_step_system_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 
@@ -250,13 +251,13 @@ namespace impm
     make_assembly_groups();
 
     /**
-     * Add the group of the points of the runs of @p order whose target is
-     * @p target (see make_assembly_groups()).
+     * Add the group of the points of the runs @p members of @p runs (of
+     * @p order), which share one target (see make_assembly_groups()).
      */
     void
-    add_assembly_group(const std::vector<unsigned int> &order,
-                       const std::vector<SupportRun>   &runs,
-                       const unsigned int               target);
+    add_assembly_group(const std::vector<unsigned int>     &order,
+                       const std::vector<SupportRun>       &runs,
+                       const ArrayView<const unsigned int> &members);
 
     const BackgroundGrid<dim> &grid;
     const MPI_Comm             communicator;
