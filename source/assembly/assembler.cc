@@ -271,7 +271,7 @@ namespace impm
                                        step.initial_volume),
                     gradient_map(p));
                 const Tensor<1, dim> *gradients = gradients_of(p);
-                if (group.merged)
+                if (!group.node_positions.empty())
                   {
                     // The point's gradients on the group's support, zero
                     // on the nodes the point's support lacks.

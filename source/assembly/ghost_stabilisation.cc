@@ -149,15 +149,11 @@ namespace impm
                 cell_dofs[i]     = local(dofs_here[i]);
                 cell_dofs[n + i] = local(dofs_there[i]);
               }
-            face_penalties.push_back(merge_shared_dofs(cell_dofs, matrix));
-            FacePenalty &face = face_penalties.back();
-            face.components.resize(face.dofs.size());
+            std::vector<unsigned char> cell_components(2 * n);
             for (unsigned int i = 0; i < 2 * n; ++i)
-              face.components[std::lower_bound(face.dofs.begin(),
-                                               face.dofs.end(),
-                                               cell_dofs[i]) -
-                              face.dofs.begin()] =
-                fe.system_to_component_index(i % n).first;
+              cell_components[i] = fe.system_to_component_index(i % n).first;
+            face_penalties.push_back(
+              merge_shared_dofs(cell_dofs, cell_components, matrix));
           }
       }
   }
@@ -238,8 +234,9 @@ namespace impm
   template <int dim>
   typename GhostStabilisation<dim>::FacePenalty
   GhostStabilisation<dim>::merge_shared_dofs(
-    const std::vector<unsigned int> &cell_dofs,
-    const FullMatrix<double>        &cell_matrix)
+    const std::vector<unsigned int>  &cell_dofs,
+    const std::vector<unsigned char> &cell_components,
+    const FullMatrix<double>         &cell_matrix)
   {
     FacePenalty face;
     face.dofs = cell_dofs;
@@ -251,6 +248,9 @@ namespace impm
       position[i] =
         std::lower_bound(face.dofs.begin(), face.dofs.end(), cell_dofs[i]) -
         face.dofs.begin();
+    face.components.resize(face.dofs.size());
+    for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+      face.components[position[i]] = cell_components[i];
     face.matrix.reinit(face.dofs.size(), face.dofs.size());
     for (unsigned int i = 0; i < cell_dofs.size(); ++i)
       for (unsigned int j = 0; j < cell_dofs.size(); ++j)

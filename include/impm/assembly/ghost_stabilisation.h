@@ -106,12 +106,14 @@ namespace impm
 
     /**
      * @brief The penalty of a face from the matrix @p cell_matrix on the
-     * two cells' DoFs @p cell_dofs (those of the shared nodes twice): each
-     * DoF once, its rows and columns summed.
+     * two cells' DoFs @p cell_dofs (those of the shared nodes twice), of
+     * vector components @p cell_components: each DoF once, its rows and
+     * columns summed.
      */
     static FacePenalty
-    merge_shared_dofs(const std::vector<unsigned int> &cell_dofs,
-                      const FullMatrix<double>        &cell_matrix);
+    merge_shared_dofs(const std::vector<unsigned int>  &cell_dofs,
+                      const std::vector<unsigned char> &cell_components,
+                      const FullMatrix<double>         &cell_matrix);
   };
 } // namespace impm
 

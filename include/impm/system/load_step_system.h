@@ -1,7 +1,6 @@
 #ifndef impm_system_load_step_system_h
 #define impm_system_load_step_system_h
 
-#include <deal.II/base/array_view.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 
@@ -11,6 +10,7 @@
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
 #include <impm/solver/near_null_space.h>
+#include <impm/system/assembly_groups.h>
 #include <impm/system/off_process_rows.h>
 #include <impm/system/point_step.h>
 
@@ -25,35 +25,6 @@ namespace impm
   class GhostStabilisation;
   template <int dim>
   class FBar;
-
-  /**
-   * @brief Points whose stiffness is summed in one dense local matrix on
-   * one support and added to the system matrix once (fixed during a load
-   * step): the points of one support and those whose supports it holds
-   * (LoadStepSystem::make_assembly_groups()).
-   */
-  struct AssemblyGroup
-  {
-    /** Indices into the point steps of the group's points, ascending. */
-    std::vector<unsigned int> points;
-    /** Number of nodes of the group's support. */
-    unsigned int n_nodes = 0;
-    /** Local indices of the support's DoFs in the nodal vectors, node by
-     *  node (as PointStep::dofs). */
-    std::vector<unsigned int> dofs;
-    /** Whether some point's support is smaller than the group's. */
-    bool merged = false;
-    /** If merged: for each point in turn, the position of each node of its
-     *  support in the group's support; empty otherwise. */
-    std::vector<unsigned char> node_positions;
-    /** Positions in dofs of the DoFs in the linear system, in the order of
-     *  rows. */
-    std::vector<unsigned int> local;
-    /** Their indices in the linear system, ascending. */
-    std::vector<types::global_dof_index> rows;
-    /** For each DoF of the support, whether it is in the linear system. */
-    std::vector<unsigned char> in_system;
-  };
 
   /**
    * @brief The linear system of one load step: the basis of every point on
@@ -230,34 +201,6 @@ namespace impm
     /** The fingerprint of the pattern the matrix has (0: none yet). */
     std::uint64_t matrix_fingerprint = 0;
 
-    /**
-     * The points of one support: positions [first, last) of an order of
-     * the points, and the run whose group they join (themselves if none).
-     */
-    struct SupportRun
-    {
-      unsigned int first, last, target;
-    };
-
-    /**
-     * Group the points: order them by support, cut the order into runs of
-     * one support, and let each run join the largest run whose support
-     * (a box of nodes) holds its own (so the sparsity pattern is that of
-     * the supports alone, and a deformed GIMP body, where nearly every
-     * point has a support of its own, adds about one block per node
-     * instead of one per point).
-     */
-    void
-    make_assembly_groups();
-
-    /**
-     * Add the group of the points of the runs @p members of @p runs (of
-     * @p order), which share one target (see make_assembly_groups()).
-     */
-    void
-    add_assembly_group(const std::vector<unsigned int>     &order,
-                       const std::vector<SupportRun>       &runs,
-                       const ArrayView<const unsigned int> &members);
 
     const BackgroundGrid<dim> &grid;
     const MPI_Comm             communicator;
