@@ -102,10 +102,14 @@ namespace impm
   LoadStepProblem<dim>::assemble_matrix()
   {
     TimerOutput::Scope scope(timer, "assembly");
-    system.zero_matrix();
+    // The ghost penalty does not change within a load step: added after
+    // the setup and then kept.
+    if (!system.begin_matrix() && ghost_stabilisation != nullptr)
+      {
+        ghost_stabilisation->add_matrix(system, system.matrix);
+        system.keep_constant_part();
+      }
     assembler.add_stiffness(system.matrix);
-    if (ghost_stabilisation != nullptr)
-      ghost_stabilisation->add_matrix(system, system.matrix);
     // The contact adds its entries through the matrix's add().
     if (rigid_contact != nullptr)
       rigid_contact->add_matrix(system, system.matrix);

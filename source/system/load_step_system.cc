@@ -183,6 +183,9 @@ namespace impm
         for (auto &rows : f_bar->patch_rows())
           blocks.push_back(std::move(rows));
       }
+    // The constant part's faces (and, with a new pattern, its addresses)
+    // may have changed.
+    constant_part.clear();
     const std::uint64_t fingerprint = pattern_fingerprint(blocks);
     ++n_setups;
     if (Utilities::MPI::min(fingerprint == matrix_fingerprint ? 1u : 0u,
@@ -192,19 +195,28 @@ namespace impm
         return;
       }
     matrix_fingerprint = fingerprint;
-    DynamicSparsityPattern dsp(relevant);
+    // This process's own rows, and those it assembles for others, which
+    // their owners receive into their own patterns: the matrix is made
+    // from its process's rows alone.
+    DynamicSparsityPattern own_pattern(owned);
+    IndexSet               others = relevant;
+    others.subtract_set(owned);
+    DynamicSparsityPattern other_pattern(others);
+    const auto             add_block =
+      [&](const std::vector<types::global_dof_index> &indices) {
+        for (const auto row : indices)
+          (row >= offset && row < offset + n_local_system ? own_pattern :
+                                                            other_pattern)
+            .add_entries(row, indices.begin(), indices.end(), true);
+      };
     for (const auto &indices : blocks)
-      for (const auto row : indices)
-        dsp.add_entries(row, indices.begin(), indices.end(), true);
+      add_block(indices);
     for (const AssemblyGroup &group : assembly_groups)
-      for (const auto row : group.rows)
-        dsp.add_entries(row, group.rows.begin(), group.rows.end(), true);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               owned,
-                                               communicator,
-                                               relevant);
-    matrix.reinit(owned, owned, dsp, communicator);
-    off_process_rows.reinit(owned, relevant, dsp, matrix, communicator);
+      add_block(group.rows);
+    off_process_rows.reinit(owned, other_pattern, communicator);
+    off_process_rows.add_received_to(own_pattern);
+    matrix.reinit(owned, owned, own_pattern, communicator);
+    off_process_rows.connect(matrix);
     rhs.reinit(owned, communicator);
     solution.reinit(owned, communicator);
   }
@@ -212,14 +224,30 @@ namespace impm
 
 
   template <int dim>
-  void
-  LoadStepSystem<dim>::zero_matrix()
+  bool
+  LoadStepSystem<dim>::begin_matrix()
   {
     if (matrix.is_compressed())
       const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix()).PutScalar(0.);
     else
       matrix = 0.;
     off_process_rows.zero();
+    constant_part.restore();
+    return constant_part.has_record();
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepSystem<dim>::keep_constant_part()
+  {
+    if (constant_part.has_record() ||
+        off_process_rows.any_added_through_matrix())
+      return;
+    constant_part.record(matrix.trilinos_matrix());
+    if (off_process_rows.active())
+      constant_part.record(off_process_rows.matrix());
   }
 
 

@@ -11,6 +11,7 @@
 #include <impm/points/material_points.h>
 #include <impm/solver/near_null_space.h>
 #include <impm/system/assembly_groups.h>
+#include <impm/system/kept_entries.h>
 #include <impm/system/off_process_rows.h>
 #include <impm/system/point_step.h>
 
@@ -156,12 +157,27 @@ namespace impm
                  NodalVector                         &nodal) const;
 
     /**
-     * @brief Set the matrix and its off-process rows to zero before an
-     * assembly, in place (deal.II's operator= would first compress(), an
-     * exchange with every process).
+     * @brief Start an assembly of the matrix: set it and its off-process
+     * rows to the load step's constant part if keep_constant_part() has
+     * recorded one since the last setup(), else to zero; in place
+     * (deal.II's operator= would first compress(), an exchange with every
+     * process). Returns whether the constant part is in; if not, the caller
+     * adds the terms that do not change within the load step and may then
+     * call keep_constant_part().
+     */
+    bool
+    begin_matrix();
+
+    /**
+     * @brief Keep the matrix's and off-process rows' present entries as the
+     * load step's constant part, for begin_matrix() to write back until the
+     * next setup(). Call right after adding the constant terms to a matrix
+     * that begin_matrix() zeroed. Does nothing if a row went through the
+     * matrix's add() (held by Trilinos, not in place): then every assembly
+     * adds the constant terms itself.
      */
     void
-    zero_matrix();
+    keep_constant_part();
 
     /**
      * @brief Finish an assembly: send the off-process rows to their owners
@@ -197,6 +213,9 @@ namespace impm
     std::uint64_t
     pattern_fingerprint(
       const std::vector<std::vector<types::global_dof_index>> &blocks) const;
+
+    /** See keep_constant_part(). */
+    KeptEntries constant_part;
 
     /** The fingerprint of the pattern the matrix has (0: none yet). */
     std::uint64_t matrix_fingerprint = 0;
