@@ -337,8 +337,12 @@ namespace impm
       system.evaluate_basis(material_points, parameters.material_points.basis);
     }
     TimerOutput::Scope scope(timer, "system setup");
-    system.setup(material_points, ghost_stabilisation.get(), f_bar.get());
-    if (linear_solver->needs_near_null_space())
+    const bool         same_system =
+      system.setup(material_points, ghost_stabilisation.get(), f_bar.get());
+    // A kept matrix has the rows of the step before, and so its rigid-body
+    // modes: the linear solver may keep what it built for it (an AMG
+    // hierarchy, under its reuse rule).
+    if (linear_solver->needs_near_null_space() && !same_system)
       linear_solver->set_near_null_space(system.rigid_body_modes());
   }
 

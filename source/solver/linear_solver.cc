@@ -137,9 +137,10 @@ namespace impm
      * following Newton iterations of the step (the matrix is reassembled in
      * place: its values change, its pattern does not) until a solve needs
      * more than 'Solver/AMG reuse factor' times the iterations of the first
-     * solve after the build; a new system (set_near_null_space(), called
-     * at every load step's setup) or a failed solve with a kept hierarchy
-     * builds a new one. A system small enough for ML to factorise whole
+     * solve after the build, also over load steps whose setup keeps the
+     * matrix; a new matrix (set_near_null_space(), called at every setup
+     * that makes one) or a failed solve with a kept hierarchy builds a new
+     * one. A system small enough for ML to factorise whole
      * (no more rows than its coarse size, 2000 with deal.II's settings)
      * gets a new factorisation for every solve.
      */

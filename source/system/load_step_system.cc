@@ -75,7 +75,7 @@ namespace impm
 
 
   template <int dim>
-  void
+  bool
   LoadStepSystem<dim>::setup(const MaterialPoints<dim> &material_points,
                              GhostStabilisation<dim>   *ghost_stabilisation,
                              FBar<dim>                 *f_bar)
@@ -192,7 +192,7 @@ namespace impm
                             communicator) == 1u)
       {
         ++n_patterns_reused;
-        return;
+        return true;
       }
     matrix_fingerprint = fingerprint;
     // This process's own rows, and those it assembles for others, which
@@ -219,6 +219,7 @@ namespace impm
     off_process_rows.connect(matrix);
     rhs.reinit(owned, communicator);
     solution.reinit(owned, communicator);
+    return false;
   }
 
 

@@ -100,8 +100,10 @@ namespace impm
     /**
      * @brief The rigid-body modes of the current system
      * (LoadStepSystem::rigid_body_modes()). Called after every setup of
-     * the system (a new matrix): a solver that keeps something made from
-     * the last matrix (GMRES with AMG: its hierarchy) drops it here.
+     * the system that makes a new matrix (a setup that keeps the matrix
+     * of the step before keeps its rows and modes): a solver that keeps
+     * something made from the last matrix (GMRES with AMG: its hierarchy)
+     * drops it here.
      */
     virtual void
     set_near_null_space(NearNullSpace modes)

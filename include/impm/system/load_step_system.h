@@ -79,9 +79,10 @@ namespace impm
      * @brief Number the system's DoFs, group the points, let the ghost
      * stabilisation (if any) choose its faces and F-bar (if any) its
      * patches, and make the sparsity pattern, matrix and vectors.
-     * Collective.
+     * Returns whether the matrix of the step before was kept (the same
+     * rows and pattern on every process: the same system). Collective.
      */
-    void
+    bool
     setup(const MaterialPoints<dim> &material_points,
           GhostStabilisation<dim>   *ghost_stabilisation,
           FBar<dim>                 *f_bar);
