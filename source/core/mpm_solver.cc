@@ -12,6 +12,10 @@
 #include <iomanip>
 #include <sstream>
 
+#ifdef __GLIBC__
+#  include <malloc.h>
+#endif
+
 namespace impm
 {
   namespace
@@ -35,6 +39,15 @@ namespace impm
       for (const auto &effect : effects)
         sum += effect->acceleration_from_the_start();
       return sum;
+    }
+
+    /** Give the memory the allocator holds free back to the system. */
+    void
+    return_free_memory()
+    {
+#ifdef __GLIBC__
+      malloc_trim(0);
+#endif
     }
   } // namespace
 
@@ -399,6 +412,17 @@ namespace impm
                                 BasisType::gimp &&
                               parameters.material_points.update_domains,
                             record.step_number);
+    // The step's per-point data is made anew for the next step. Freed
+    // here and returned to the system, the re-sorting's buffers do not
+    // come on top of it; then the freed buffers (many small pieces, which
+    // the next step's one large block could not reuse) are returned too.
+    // (Under Open MPI glibc keeps what is freed: on the 10^6-point scene
+    // on 2 processes the peak fell from 1.03-1.41 GB to 0.86-0.92 GB per
+    // process.)
+    system.release_point_steps();
+    return_free_memory();
+    material_points.sort_into_cells(record.step_number);
+    return_free_memory();
   }
 
 

@@ -461,7 +461,14 @@ namespace impm
     for (const auto &message : messages)
       if (!message.empty())
         throw CollectiveError(message);
+  }
 
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::sort_into_cells(const unsigned int load_step)
+  {
     const auto n_before = particle_handler.n_global_particles();
     particle_handler.sort_particles_into_subdomains_and_cells();
     if (particle_handler.n_global_particles() != n_before)

@@ -158,6 +158,17 @@ namespace impm
                  NodalVector                         &nodal) const;
 
     /**
+     * @brief Free point_steps (after a converged step has advanced the
+     * points; evaluate_basis() makes them anew for the next step).
+     */
+    void
+    release_point_steps()
+    {
+      point_steps.clear();
+      point_steps.shrink_to_fit();
+    }
+
+    /**
      * @brief Start an assembly of the matrix: set it and its off-process
      * rows to the load step's constant part if keep_constant_part() has
      * recorded one since the last setup(), else to zero; in place
