@@ -141,7 +141,7 @@ namespace impm
      * matrix; a new matrix (set_near_null_space(), called at every setup
      * that makes one) or a failed solve with a kept hierarchy builds a new
      * one. A system small enough for ML to factorise whole
-     * (no more rows than its coarse size, 2000 with deal.II's settings)
+     * (no more rows than its coarse size, 'Solver/AMG coarse size')
      * gets a new factorisation for every solve.
      */
     class GmresAmgSolver : public LinearSolver
@@ -152,6 +152,7 @@ namespace impm
         : max_iterations(parameters.linear_iterations)
         , reuse_factor(parameters.amg_reuse_factor)
         , aggregation_threshold(parameters.amg_aggregation_threshold)
+        , coarse_size(parameters.amg_coarse_size)
       {}
 
       bool
@@ -280,6 +281,7 @@ namespace impm
         ml_parameters.set("null space: dimension",
                           static_cast<int>(near_null_space.n_modes));
         ml_parameters.set("null space: vectors", near_null_space.values.data());
+        ml_parameters.set("coarse: max size", static_cast<int>(coarse_size));
         // A system no larger than ML's coarse size is factorised whole: a
         // new "hierarchy" is a direct solve, no dearer than a kept one's
         // extra iterations, and exact.
@@ -345,6 +347,8 @@ namespace impm
       const double reuse_factor;
       /** 'Solver/AMG aggregation threshold'. */
       const double aggregation_threshold;
+      /** 'Solver/AMG coarse size'. */
+      const unsigned int coarse_size;
       /** The rigid-body modes of the current system. */
       NearNullSpace near_null_space;
       /** The current hierarchy (null before the first solve of a system). */

@@ -299,6 +299,9 @@ namespace impm
       /** ML's aggregation threshold (the connections weaker than this
        *  fraction of the diagonal are dropped before aggregation). */
       double amg_aggregation_threshold;
+      /** ML coarsens until a level has at most this many rows and solves
+       *  that level directly. */
+      unsigned int amg_coarse_size;
       /** Cut failed load steps and grow easy ones (else a failure stops). */
       bool step_control;
       /** Smallest load increment, as a fraction of the total load. */
