@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Every hard-case scene with the iterative solver (issue 10): the test
+# scenes of doc/hard_cases.md (ghost stabilisation and its absence,
+# standard MPM, step cuts, nearly incompressible columns with and without
+# F-bar, a tiny yield stress, the merged assembly groups in 3D, F-bar with
+# Mohr-Coulomb) and every rigid-contact scene, each run with the direct
+# solver and with GMRES and ML's AMG, 'AMG coarse size' 50 so that ML
+# builds a multilevel hierarchy even for these small systems (with
+# deal.II's 2000 it factorises them whole and GMRES takes one iteration),
+# its tolerance tied to the Newton residual. Both runs must reach the
+# same answers: the final extents, stresses, reactions, masses, rigid-body
+# forces and load-step cuts, at the suite's tolerances. The Newton
+# iterations are not compared (an inexact Newton step takes more of them),
+# nor the observed Newton order (the tolerance tied to the residual stops
+# the last linear solve just short of the Newton tolerance, on purpose),
+# nor the condition estimate (GMRES makes none); tangent checks are off
+# (they test the matrix, not the solver).
+#
+# Two frictional contact scenes whose answer depends on the path,
+# contact_rolling_disc and contact_tangent_disc, reach other converged
+# states with GMRES (final contact forces 0.1-3 % apart, the largest
+# vertical stress up to 6.4 %; contact_tangent_disc cuts
+# one step fewer; doc/benchmarks/README.md, "Every hard case with the
+# iterative solver"): for them the test checks that the GMRES run
+# completes with every step converged, and prints the differences.
+# Usage: hard_cases_iterative.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
+tests=$2
+source "$(dirname "$0")/script_helpers.sh" "$@"
+path_dependent=" contact_rolling_disc contact_tangent_disc "
+scenes="collapse_h1 collapse_h1_4steps hard_edge_support_stabilised
+  hard_edge_support_unstabilised column_nearly_incompressible
+  column_nearly_incompressible_f_bar column_tiny_yield column_smpm_plastic_16
+  column_gimp_elastic_16 column_gimp_plastic_16 assembly_groups_tangent_3d
+  f_bar_tangent_mohr_coulomb"
+for scene in "$tests"/contact_*.prm; do
+  scenes="$scenes $(basename "$scene" .prm)"
+done
+n_same=0
+n_path=0
+for name in $scenes; do
+  [ -f "$tests/$name.prm" ] || fail "$name.prm is missing"
+  for solver in direct "GMRES with AMG"; do
+    rm -rf results* output*
+    "${launcher[@]}" "$impm" "$tests/$name.prm" --set "Testing/Check tangent=false" \
+      --set "Solver/Linear solver=$solver" --set "Solver/AMG coarse size=50" \
+      > run.txt 2> log.txt || fail "$name did not run with '$solver'"
+    grep -v "^step \|^worst condition estimate\|^observed Newton order" run.txt |
+      sed 's/total Newton iterations: [0-9]*, //' > "${name}_${solver// /_}.txt"
+    grep -q "^material points: " "${name}_${solver// /_}.txt" ||
+      fail "$name with '$solver' printed no summary"
+  done
+  if [[ "$path_dependent" == *" $name "* ]]; then
+    echo "$name (path dependent): GMRES with AMG completes; its answers against KLU's:"
+    diff "${name}_direct.txt" "${name}_GMRES_with_AMG.txt" | sed 's/^/  /'
+    n_path=$((n_path + 1))
+  else
+    compare "${name}_direct.txt" "${name}_GMRES_with_AMG.txt" \
+      "$name: GMRES with AMG reaches other answers than KLU"
+    n_same=$((n_same + 1))
+  fi
+done
+[ "$n_same" -ge 21 ] || fail "only $n_same scenes compared"
+[ "$n_path" -eq 2 ] || fail "the path-dependent scenes were not all found"
+echo "hard_cases_iterative: $n_same scenes give KLU's answers with GMRES and a" \
+  "multilevel AMG; $n_path path-dependent contact scenes complete"
