@@ -17,12 +17,14 @@
 # (they test the matrix, not the solver).
 #
 # Two frictional contact scenes whose answer depends on the path,
-# contact_rolling_disc and contact_tangent_disc, reach other converged
-# states with GMRES (final contact forces 0.1-3 % apart, the largest
-# vertical stress up to 6.4 %; contact_tangent_disc cuts
-# one step fewer; doc/benchmarks/README.md, "Every hard case with the
-# iterative solver"): for them the test checks that the GMRES run
-# completes with every step converged, and prints the differences.
+# contact_rolling_disc and contact_tangent_disc, take another load path
+# with GMRES: a step that KLU's Newton solves in few enough iterations to
+# double the next step takes one more with GMRES, so the steps differ
+# (contact_tangent_disc cuts one step fewer), and the final contact forces
+# are 0.1-3 % apart, the largest vertical stress up to 6.4 %
+# (doc/benchmarks/README.md, "Every hard case with the iterative
+# solver"). For them the test checks that the GMRES run completes with
+# every step converged, and prints the differences.
 # Usage: hard_cases_iterative.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
 tests=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
