@@ -14,6 +14,13 @@ namespace impm
 {
   namespace
   {
+    /**
+     * MPI tags of the two exchanges, apart from deal.II's (300 to about
+     * 1,000) and Epetra's (24,050 to 24,099).
+     */
+    constexpr int structure_tag = 4216;
+    constexpr int values_tag    = 4217;
+
     /** Throw with Trilinos' error code if @p error is not zero. */
     void
     check(const int error, const std::string &while_doing)
@@ -116,7 +123,7 @@ namespace impm
     const std::vector<unsigned int> senders =
       Utilities::MPI::compute_point_to_point_communication_pattern(communicator,
                                                                    targets);
-    const int                tag = 4216;
+    const int                tag = structure_tag;
     std::vector<MPI_Request> requests;
     for (const auto &[process, message] : sent)
       {
@@ -304,7 +311,7 @@ namespace impm
     AssertThrow(&matrix.trilinos_matrix() == target_matrix,
                 ExcMessage("The off-process rows were made for another "
                            "matrix."));
-    const int                tag = 4217;
+    const int                tag = values_tag;
     std::vector<MPI_Request> requests;
     requests.reserve(destinations.size() + sources.size());
     for (unsigned int s = 0; s < sources.size(); ++s)
