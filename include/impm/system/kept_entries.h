@@ -56,13 +56,6 @@ namespace impm
         *address = value;
     }
 
-    /** @brief The number of entries kept. */
-    std::size_t
-    size() const
-    {
-      return entries.size();
-    }
-
   private:
     /** The address of each kept entry in its matrix, and its value. */
     std::vector<std::pair<double *, double>> entries;

@@ -239,7 +239,6 @@ namespace impm
     BasisType                            basis = BasisType::gimp;
     std::vector<types::global_dof_index> index_in_system;
     IndexSet                             owned;
-    IndexSet                             relevant;
   };
 } // namespace impm
 
