@@ -204,6 +204,7 @@ expect grid_too_large "The scene needs about [0-9.]+ TB \(1e\+10 cells, .* avail
 expect set_without_equals "--set 'Solver/Tolerance': expected \"Subsection/Entry=value\"" - -- "$base" --set "Solver/Tolerance"
 expect set_unknown_entry "--set 'Solver/Tolerence=1': there is no entry 'Tolerence' in subsection 'Solver' \(did you mean 'Tolerance'\?\)" - -- "$base" --set "Solver/Tolerence=1"
 expect set_bad_value "--set 'Solver/Load steps=-2': 'Solver/Load steps' = '-2' is not allowed: it must be an integer >= 1" - -- "$base" --set "Solver/Load steps=-2"
+expect largest_below_linear_tolerance "Solver/Largest linear tolerance = 1e-14 is below Solver/Linear tolerance = 1e-12; allowed: from 'Linear tolerance' to 0.5" - -- "$base" --set "Solver/Largest linear tolerance=1e-14"
 expect unknown_option "Unknown option '--fast'; see impm --help" - -- "$base" --fast
 expect resume_without_checkpoint "--resume: the output directory 'results' holds no complete checkpoint" also_parallel -- "$base" --resume
 expect stop_after_zero_steps "--stop-after-step '0': expected a number of load steps from 1 to 1e9" - -- "$base" --stop-after-step 0

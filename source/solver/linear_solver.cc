@@ -149,7 +149,8 @@ namespace impm
     public:
       /** @brief A Krylov solver with the scene's iteration limit. */
       explicit GmresAmgSolver(const Parameters::Solver &parameters)
-        : max_iterations(parameters.linear_iterations)
+        : tightest_tolerance(parameters.linear_tolerance)
+        , max_iterations(parameters.linear_iterations)
         , reuse_factor(parameters.amg_reuse_factor)
         , aggregation_threshold(parameters.amg_aggregation_threshold)
         , coarse_size(parameters.amg_coarse_size)
@@ -249,7 +250,7 @@ namespace impm
                      request.matrix,
                      *request.additional_solutions[k],
                      *request.additional_right_hand_sides[k],
-                     request.relative_tolerance,
+                     tightest_tolerance,
                      iteration_limit,
                      report);
       }
@@ -342,6 +343,9 @@ namespace impm
       }
 
     private:
+      /** 'Solver/Linear tolerance': the additional right-hand sides' (see
+       *  LinearSolveRequest). */
+      const double       tightest_tolerance;
       const unsigned int max_iterations;
       /** 'Solver/AMG reuse factor'. */
       const double reuse_factor;

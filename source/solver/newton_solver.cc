@@ -12,7 +12,9 @@ namespace impm
     double order = std::numeric_limits<double>::max();
     for (unsigned int k = 1; k + 1 < residuals.size(); ++k)
       if (residuals[k] < 1e-3 && residuals[k + 1] > 1e-10 &&
-          !(k + 1 < contact_changed.size() && contact_changed[k + 1]))
+          !(k + 1 < contact_changed.size() && contact_changed[k + 1]) &&
+          !(k < asked_for_tolerance_only.size() &&
+            asked_for_tolerance_only[k]))
         order =
           std::min(order, std::log(residuals[k + 1]) / std::log(residuals[k]));
     return order;
@@ -53,7 +55,7 @@ namespace impm
     // Eisenstat and Walker's forcing term, and no tighter than needed to
     // bring the residual below the Newton tolerance.
     return std::max(parameters.linear_tolerance,
-                    std::min(0.1,
+                    std::min(parameters.largest_linear_tolerance,
                              std::max(0.1 * residual,
                                       0.5 * parameters.tolerance / residual)));
   }
@@ -91,9 +93,14 @@ namespace impm
             problem.assemble_matrix();
             const bool estimate =
               parameters.estimate_condition && iteration == 0;
-            record.linear_solves.push_back(problem.solve_and_update(
-              linear_tolerance(residual.relative, residual.contact_changed),
-              estimate));
+            const double forcing_term =
+              linear_tolerance(residual.relative, residual.contact_changed);
+            record.linear_solves.push_back(
+              problem.solve_and_update(forcing_term, estimate));
+            record.asked_for_tolerance_only.push_back(
+              record.linear_solves.back().iterations > 0 &&
+              forcing_term > parameters.linear_tolerance &&
+              forcing_term > 0.1 * residual.relative);
             if (!record.linear_solves.back().success)
               {
                 record.outcome = NewtonOutcome::linear_solve_failed;

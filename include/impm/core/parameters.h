@@ -293,6 +293,8 @@ namespace impm
       unsigned int linear_iterations;
       /** Tie the linear tolerance to the Newton residual. */
       bool adaptive_linear_tolerance;
+      /** The loosest linear tolerance the adaptive choice gives. */
+      double largest_linear_tolerance;
       /** Keep the AMG hierarchy while the Krylov iterations stay below this
        *  factor times those right after it was built (0: never keep). */
       double amg_reuse_factor;

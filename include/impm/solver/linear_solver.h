@@ -47,7 +47,12 @@ namespace impm
     /** More right-hand sides with the same matrix, solved into @p
      *  additional_solutions (as many, of the same partition) with the
      *  factorisation or preconditioner of the first: the bordered systems
-     *  of rigid bodies pushed by a force. */
+     *  of rigid bodies pushed by a force. An iterative solver solves them to
+     *  'Solver/Linear tolerance', not to @p relative_tolerance: their
+     *  solutions enter a Schur complement, the difference of a body's
+     *  contact stiffness and what the material passes on, which cancels
+     *  (with a forcing term of 1e-2, contact_plate_force_driven cycled at
+     *  a relative residual of 1e-8). */
     std::vector<const TrilinosWrappers::MPI::Vector *>
       additional_right_hand_sides = {};
     /** Where the additional right-hand sides' solutions go. */
