@@ -6,8 +6,8 @@
 # plastic flow) and once elastic (a yield stress of 1e12 Pa). Every solve
 # builds its own AMG hierarchy ('AMG reuse factor' 0), so the counts measure
 # ML, not how long a kept hierarchy serves; 'AMG coarse size' 50 gives every
-# grid, h = 1 m (159 DoFs) included, a multilevel hierarchy (with deal.II's
-# 2000 the systems of h = 1 and 0.5 m are factorised whole and solved in one
+# grid, h = 1 m (159 DoFs) included, a multilevel hierarchy (with the
+# default 500 the system of h = 1 m is factorised whole and solved in one
 # iteration). Prints, per material and grid, the system size, the linear
 # solves and the GMRES iterations per solve (mean and largest), and checks
 # that

@@ -131,8 +131,7 @@ namespace impm
     /** @brief The linear solver of each Newton iteration. */
     enum class LinearSolverType
     {
-      /** KLU up to LinearSolver::automatic_threshold system DoFs, GMRES with
-       *  AMG above. */
+      /** KLU up to 'AMG coarse size' system DoFs, GMRES with AMG above. */
       automatic,
       /** Trilinos Amesos KLU (serial factorisation). */
       direct,

@@ -82,14 +82,6 @@ namespace impm
     static std::unique_ptr<LinearSolver>
     create(const Parameters::Solver &parameters);
 
-    /**
-     * @brief The system size (DoFs) above which 'automatic' uses GMRES with
-     * AMG rather than KLU: on the 2D collapse (GIMP, one process) a KLU
-     * solve takes 2.5 ms at 600 DoFs and 22 ms at 2200, GMRES with AMG 4.3
-     * and 13 ms; the two cross near 1200 (doc/benchmarks/README.md).
-     */
-    static constexpr unsigned int automatic_threshold = 1500;
-
     virtual ~LinearSolver() = default;
 
     /**
