@@ -38,7 +38,7 @@
 #   (now 'Largest linear tolerance', 1e-2) Newton wandered where points
 #   change return region: 2,747 iterations, 3 cuts, 372 load steps against
 #   KLU's 363, none, 50. Whether a step near the limit load is cut is
-#   chaotic (at h = 0.125 m KLU itself cuts one, and GMRES with a cap of
+#   chaotic (at h = 0.0625 m KLU itself cuts one, and GMRES with a cap of
 #   1e-3 too but not with 1e-2; here with coarse size 50 GMRES cuts one, 712
 #   iterations), so the check is within 2.5 times KLU's iterations and at
 #   most one more cut.

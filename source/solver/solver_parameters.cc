@@ -83,7 +83,7 @@ namespace impm
         "With 'Adaptive linear tolerance': the loosest relative residual an "
         "iterative solve is asked for, far from the solution (at least "
         "'Linear tolerance'). 0.1 let Newton wander where Mohr-Coulomb "
-        "points change return region: the footing at h = 0.125 m took "
+        "points change return region: the footing at h = 0.0625 m took "
         "11,025 Newton iterations and 446 s with 0.1, 467 and 16 s with "
         "1e-2 (doc/benchmarks/README.md).");
       prm.declare_entry("Linear iterations",

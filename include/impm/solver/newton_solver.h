@@ -179,7 +179,7 @@ namespace impm
      * alpha = 2, on the relative residual), and never tighter than needed
      * to bring the residual below the Newton tolerance. The cap eta_max
      * (default 1e-2) is tighter than theirs: with 0.1, the Mohr-Coulomb
-     * footing at h = 0.125 m wandered for whole load steps where points
+     * footing at h = 0.0625 m wandered for whole load steps where points
      * change return region (11,025 Newton iterations and 1,363 load steps
      * against 467 and 50; doc/benchmarks/README.md, "The forcing term's
      * cap").
