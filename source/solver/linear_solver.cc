@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <sstream>
 
@@ -390,21 +391,67 @@ namespace impm
       explicit AutomaticSolver(const Parameters::Solver &parameters)
         : GmresAmgSolver(parameters)
         , direct("Amesos_Klu", "direct (KLU)")
+        , rescue_size(parameters.direct_rescue_size)
       {}
 
+      std::string
+      statistics() const override
+      {
+        const std::string gmres = GmresAmgSolver::statistics();
+        if (n_rescued == 0)
+          return gmres;
+        return gmres + "; failed GMRES solves done again with KLU: " +
+               std::to_string(n_rescued);
+      }
+
     protected:
+      /**
+       * KLU up to the coarse size; GMRES with AMG above, and where that
+       * fails on a system of at most 'Solver/Direct rescue size' rows, KLU
+       * on the same system (on every process together: a failure on one is
+       * a failure on all). Without ghost stabilisation the collapse at
+       * h = 0.5 m has nearly singular systems on which GMRES runs out of
+       * iterations near the solution: two step cuts, 270 Newton iterations
+       * against KLU's 196 without (doc/benchmarks/README.md).
+       */
       void
       try_solve(const LinearSolveRequest &request,
                 LinearSolveReport        &report) override
       {
-        if (request.matrix.m() > coarse_size)
+        if (request.matrix.m() <= coarse_size)
           {
-            choice = "GMRES with AMG";
-            GmresAmgSolver::try_solve(request, report);
+            choice = "direct";
+            direct.try_solve(request, report);
             return;
           }
-        choice = "direct";
+        choice = "GMRES with AMG";
+        std::exception_ptr failure;
+        try
+          {
+            GmresAmgSolver::try_solve(request, report);
+          }
+        catch (const std::exception &)
+          {
+            failure = std::current_exception();
+          }
+        const bool failed_somewhere =
+          Utilities::MPI::max(failure ? 1u : 0u,
+                              request.rhs.get_mpi_communicator()) == 1u;
+        if (!failed_somewhere)
+          return;
+        if (request.matrix.m() > rescue_size)
+          {
+            // Reported as GMRES's failure (and on the other processes as
+            // one on another process).
+            if (failure)
+              std::rethrow_exception(failure);
+            return;
+          }
+        ++n_rescued;
+        choice = "direct, after GMRES with AMG failed";
+        const unsigned int krylov_iterations = report.iterations;
         direct.try_solve(request, report);
+        report.iterations = krylov_iterations;
       }
 
       std::string
@@ -415,8 +462,12 @@ namespace impm
 
     private:
       DirectSolver direct;
+      /** 'Solver/Direct rescue size'. */
+      const unsigned int rescue_size;
       /** The solver of the last solve. */
       std::string choice;
+      /** Failed GMRES solves solved again with KLU. */
+      unsigned int n_rescued = 0;
     };
   } // namespace
 

@@ -303,6 +303,9 @@ namespace impm
       /** ML coarsens until a level has at most this many rows and solves
        *  that level directly. */
       unsigned int amg_coarse_size;
+      /** 'automatic': the largest system whose failed GMRES solve KLU
+       *  repeats (0: none). */
+      unsigned int direct_rescue_size;
       /** Cut failed load steps and grow easy ones (else a failure stops). */
       bool step_control;
       /** Smallest load increment, as a fraction of the total load. */
