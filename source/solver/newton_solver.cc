@@ -13,8 +13,7 @@ namespace impm
     for (unsigned int k = 1; k + 1 < residuals.size(); ++k)
       if (residuals[k] < 1e-3 && residuals[k + 1] > 1e-10 &&
           !(k + 1 < contact_changed.size() && contact_changed[k + 1]) &&
-          !(k < asked_for_tolerance_only.size() &&
-            asked_for_tolerance_only[k]))
+          !(k < asked_for_tolerance_only.size() && asked_for_tolerance_only[k]))
         order =
           std::min(order, std::log(residuals[k + 1]) / std::log(residuals[k]));
     return order;
