@@ -4,8 +4,10 @@
 Usage: footing_curves.py OUT.png PRANDTL_KN SETTLEMENT_M LABEL=steps.csv ...
 
 Each run's steps.csv gives the footing load (-reaction_y+_y, kN per m of
-half footing) against the settlement (load factor x SETTLEMENT_M); the
-dashed line is Prandtl's limit load. Used by scripts/footing_study.sh.
+half footing) against the settlement (load factor x SETTLEMENT_M); runs
+whose label names "F-bar on" or "cell pressures" are solid, the others
+dashed; the dotted line is Prandtl's limit load. Used by
+scripts/footing_study.sh.
 """
 import csv
 import sys
@@ -34,8 +36,9 @@ def main():
     for k, spec in enumerate(sys.argv[4:]):
         label, path = spec.rsplit("=", 1)
         xs, ys = curve(path, settlement)
-        ax.plot(xs, ys, styles[0 if "F-bar on" in label else 1], label=label)
-    ax.axhline(prandtl, color="k", linestyle=":", label="Prandtl (2 + pi) c B/2")
+        solid = "F-bar on" in label or "cell pressures" in label
+        ax.plot(xs, ys, styles[0 if solid else 1], label=label)
+    ax.axhline(prandtl, color="k", linestyle=":", label="Prandtl's limit load")
     ax.set_xlabel("settlement (mm)")
     ax.set_ylabel("load on the half footing (kN/m)")
     ax.set_ylim(0, None)

@@ -56,8 +56,14 @@ namespace impm
           admissible = false;
         }
     };
+    std::vector<ArrayView<const double>> point_properties;
+    const bool with_pressures = f_bar != nullptr && f_bar->has_pressure_unknowns();
+    if (with_pressures)
+      point_properties.reserve(system.point_steps.size());
     for (const auto &point : material_points.particles())
       {
+        if (with_pressures)
+          point_properties.push_back(point.get_properties());
         PointStep<dim> &step = system.point_steps[p++];
         const auto     &s    = step.support;
         Tensor<2, dim>  dF   = unit_symmetric_tensor<dim>();
@@ -83,8 +89,17 @@ namespace impm
         if (f_bar == nullptr)
           update_point(step, point.get_properties());
       }
-    if (f_bar != nullptr &&
+    if (with_pressures &&
         Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1)
+      // Each point's volume from its patch's pressure, through its
+      // return map.
+      admissible = f_bar->equalise_pressures(
+        system.point_steps, [&](const unsigned int q) {
+          update_point(system.point_steps[q], point_properties[q]);
+          return admissible;
+        });
+    else if (f_bar != nullptr &&
+             Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1)
       {
         f_bar->average(system.point_steps);
         p = 0;

@@ -291,6 +291,28 @@ namespace impm
                         "its cell at the start of the step, with the "
                         "consistent tangent (non-symmetric; it couples all "
                         "nodes those points touch).");
+      prm.declare_entry(
+        "Cell pressure unknowns",
+        "false",
+        Patterns::Bool(),
+        "With F-bar: false gives the points of a body in a cell their mean "
+        "volume change (one volume constraint per cell); true gives them "
+        "one pressure instead, an unknown of the linear system per cell and "
+        "body, each point taking the volume change at which its mean "
+        "stress is that pressure, and their volume the cell's (Q1/P0 "
+        "displacement-pressure). A frictional material needs it: with the "
+        "mean volume change, points that dilate more lose pressure and "
+        "strength. Costs a scalar Newton solve around each point's return "
+        "map in every stress update.");
+      prm.declare_entry(
+        "Pressure jump stabilisation",
+        "0",
+        Patterns::Double(0.),
+        "With cell pressure unknowns: the factor beta of the penalty on the "
+        "jumps of the pressure between neighbouring cells of a body "
+        "(against Q1/P0's checkerboard of cell pressures); 0 for none. "
+        "Larger beta: smoother pressures, a larger departure from each "
+        "cell's volume. (>= 0)");
       prm.declare_entry("Load imbalance threshold",
                         "1.2",
                         Patterns::Double(1.),
@@ -309,6 +331,18 @@ namespace impm
       basis                    = basis_type_from_string(prm.get("Basis"));
       update_domains           = prm.get_bool("Update domains");
       f_bar                    = prm.get_bool("F-bar");
+      cell_pressure_unknowns   = prm.get_bool("Cell pressure unknowns");
+      pressure_jump_stabilisation =
+        prm.get_double("Pressure jump stabilisation");
+      if (cell_pressure_unknowns && !f_bar)
+        bad_value("Material points/Cell pressure unknowns",
+                  prm.get("Cell pressure unknowns"),
+                  "cell pressures need 'Material points/F-bar = true'");
+      if (pressure_jump_stabilisation > 0. && !cell_pressure_unknowns)
+        bad_value("Material points/Pressure jump stabilisation",
+                  prm.get("Pressure jump stabilisation"),
+                  "a stabilisation needs 'Material points/Cell pressure "
+                  "unknowns = true' (or set it to 0)");
       load_imbalance_threshold = prm.get_double("Load imbalance threshold");
       prm.leave_subsection();
     }

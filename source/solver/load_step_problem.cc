@@ -14,6 +14,7 @@ namespace impm
     Assembler<dim>                &assembler,
     const GhostStabilisation<dim> *ghost_stabilisation,
     RigidContact<dim>             *rigid_contact,
+    FBar<dim>                     *f_bar,
     LinearSolver                  &linear_solver,
     TimerOutput                   &timer)
     : grid(grid)
@@ -21,6 +22,7 @@ namespace impm
     , assembler(assembler)
     , ghost_stabilisation(ghost_stabilisation)
     , rigid_contact(rigid_contact)
+    , f_bar(f_bar != nullptr && f_bar->has_pressure_unknowns() ? f_bar : nullptr)
     , linear_solver(linear_solver)
     , timer(timer)
   {
@@ -45,6 +47,8 @@ namespace impm
   LoadStepProblem<dim>::begin(const double start, const double target)
   {
     displacement_increment = 0.;
+    if (f_bar != nullptr)
+      f_bar->reset_pressure_unknowns();
     grid.apply_prescribed_increment(target - start, displacement_increment);
     TimerOutput::Scope scope(timer, "assembly");
     assembler.assemble_external_force(target, external_force);
@@ -73,7 +77,12 @@ namespace impm
     if (rigid_contact != nullptr)
       rigid_contact->add_forces(system, displacement_increment, internal_force);
     internal_force.compress(VectorOperation::add);
-    double norm = system.set_residual(external_force, internal_force);
+    double norm =
+      f_bar != nullptr ?
+        system.set_residual(external_force,
+                            internal_force,
+                            f_bar->pressure_residuals()) :
+        system.set_residual(external_force, internal_force);
     // Without external loads (a prescribed displacement), the residual is
     // measured against the internal forces, which carry the reactions.
     double reference = external_force_norm;
@@ -160,6 +169,11 @@ namespace impm
       values.resize(rows.size());
       for (unsigned int r = 0; r < rows.size(); ++r)
         values[r] = internal_force.local_element(rows[r].second);
+      // F-bar's pressure rows: their equations.
+      if (f_bar != nullptr)
+        for (const auto &[row, residual] :
+             f_bar->pressure_residuals())
+          values.push_back(residual);
       // Then the unknowns' forces: the residual's change with the sign
       // turned (the applied force is fixed).
       if (has_unknowns())
@@ -169,6 +183,12 @@ namespace impm
             values.push_back(-residuals[j]);
         }
     };
+    // F-bar's pressure rows (their unknowns follow the nodal rows).
+    std::vector<types::global_dof_index> pressure_rows;
+    if (f_bar != nullptr)
+      for (const auto &[row, residual] :
+           f_bar->pressure_residuals())
+        pressure_rows.push_back(row);
     // A perturbation small against the cells, large against round-off.
     double cell = std::numeric_limits<double>::max();
     for (unsigned int d = 0; d < dim; ++d)
@@ -184,13 +204,25 @@ namespace impm
         for (const auto &[index, i] : rows)
           if (index == column)
             local = i;
+        // A pressure unknown's owner perturbs it by the perturbation over
+        // the cell size (the pressure over E: a strain), which all
+        // processes learn.
+        double     pressure_scale = 0.;
         const auto perturb = [&](const double amount) {
           displacement_increment.zero_out_ghost_values();
           if (local != numbers::invalid_unsigned_int)
             displacement_increment.local_element(local) += amount;
           displacement_increment.update_ghost_values();
+          if (f_bar != nullptr)
+            pressure_scale = f_bar->perturb_pressure_unknown(column, amount);
         };
         perturb(perturbation);
+        const bool owns_column =
+          local != numbers::invalid_unsigned_int || pressure_scale > 0.;
+        const double amount_scale =
+          f_bar != nullptr ?
+            Utilities::MPI::max(pressure_scale, communicator) :
+            0.;
         internal_force_at(plus);
         // A contact whose state differs between the iterate and a
         // perturbed one (a face within the perturbation of the surface or
@@ -209,17 +241,22 @@ namespace impm
             continue;
           }
         const auto compare = [&](const double entry, const unsigned int r) {
-          const double difference = (plus[r] - minus[r]) / (2. * perturbation);
+          const double difference =
+            (plus[r] - minus[r]) /
+            (2. * perturbation * (amount_scale > 0. ? amount_scale : 1.));
           largest_entry           = std::max(largest_entry, std::abs(entry));
           largest_difference =
             std::max(largest_difference, std::abs(entry - difference));
         };
         for (unsigned int r = 0; r < rows.size(); ++r)
           compare(system.matrix.el(rows[r].first, column), r);
+        for (unsigned int r = 0; r < pressure_rows.size(); ++r)
+          compare(system.matrix.el(pressure_rows[r], column), rows.size() + r);
         // The unknowns' rows, on the column's owner.
-        if (local != numbers::invalid_unsigned_int)
+        if (owns_column)
           for (unsigned int j = 0; j < coupling_rows.size(); ++j)
-            compare(coupling_rows[j](column), rows.size() + j);
+            compare(coupling_rows[j](column),
+                    rows.size() + pressure_rows.size() + j);
       }
     // The unknowns' columns: the bodies move, the DoFs stay.
     const unsigned int n_unknowns =
@@ -255,7 +292,7 @@ namespace impm
           }
         for (unsigned int i = 0; i < n_unknowns; ++i)
           {
-            const unsigned int r = rows.size() + i;
+            const unsigned int r = rows.size() + pressure_rows.size() + i;
             const double       difference =
               (plus[r] - minus[r]) / (2. * perturbation);
             largest_entry =
@@ -289,7 +326,7 @@ namespace impm
                                                           relative_tolerance,
                                                           estimate_condition});
     if (report.success)
-      system.add_solution_to(displacement_increment);
+      add_solution();
     return report;
   }
 
@@ -356,9 +393,20 @@ namespace impm
         }
     for (unsigned int j = 0; j < m; ++j)
       system.solution.add(-correction(j), responses[j]);
-    system.add_solution_to(displacement_increment);
+    add_solution();
     rigid_contact->add_to_unknowns(correction);
     return report;
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepProblem<dim>::add_solution()
+  {
+    system.add_solution_to(displacement_increment);
+    if (f_bar != nullptr)
+      f_bar->add_to_pressure_unknowns(system.solution);
   }
 
 

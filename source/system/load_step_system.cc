@@ -106,6 +106,11 @@ namespace impm
                           grid.locally_owned_dofs().nth_index_in_set(i));
         n_local_system += in_system[i];
       }
+    // With volume unknowns (F-bar's stabilisation), this process's patches
+    // follow its nodal rows.
+    n_nodal_rows = n_local_system;
+    if (f_bar != nullptr)
+      n_local_system += f_bar->make_patches(material_points);
     types::global_dof_index offset = 0;
     MPI_Exscan(&n_local_system,
                &offset,
@@ -158,7 +163,8 @@ namespace impm
         blocks.push_back(face_indices(face.dofs));
     if (f_bar != nullptr)
       {
-        f_bar->setup(material_points, *this, n_local);
+        f_bar->setup(
+          material_points, *this, n_local, offset + n_nodal_rows, owned);
         for (auto &rows : f_bar->patch_rows())
           blocks.push_back(std::move(rows));
       }
@@ -286,8 +292,9 @@ namespace impm
   {
     const types::global_dof_index first =
       owned.n_elements() > 0 ? owned.nth_index_in_set(0) : 0;
-    // The rows of this process: component and node position.
-    std::vector<std::pair<unsigned int, Point<dim>>> rows(owned.n_elements());
+    // The rows of this process: component and node position (the volume
+    // unknowns after the nodal rows have no rigid-body modes).
+    std::vector<std::pair<unsigned int, Point<dim>>> rows(n_nodal_rows);
     std::vector<double> lowest(dim, std::numeric_limits<double>::max());
     std::vector<double> highest(dim, std::numeric_limits<double>::lowest());
     for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
@@ -315,7 +322,7 @@ namespace impm
     constexpr unsigned int n_rotations = dim == 2 ? 1 : 3;
     NearNullSpace          modes;
     modes.n_modes = dim + n_rotations;
-    modes.n_rows  = rows.size();
+    modes.n_rows  = owned.n_elements();
     modes.values.assign(modes.n_modes * modes.n_rows, 0.);
     for (unsigned int r = 0; r < rows.size(); ++r)
       {
@@ -343,13 +350,17 @@ namespace impm
 
   template <int dim>
   double
-  LoadStepSystem<dim>::set_residual(const NodalVector &external,
-                                    const NodalVector &internal)
+  LoadStepSystem<dim>::set_residual(
+    const NodalVector                                             &external,
+    const NodalVector                                             &internal,
+    const std::vector<std::pair<types::global_dof_index, double>> &further_rows)
   {
     for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
       if (index_in_system[i] != numbers::invalid_dof_index)
         rhs[index_in_system[i]] =
           external.local_element(i) - internal.local_element(i);
+    for (const auto &[row, residual] : further_rows)
+      rhs[row] = -residual;
     rhs.compress(VectorOperation::insert);
     return rhs.l2_norm();
   }

@@ -5,12 +5,17 @@
 #include <deal.II/base/types.h>
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <impm/assembly/dense_block_adder.h>
+#include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
 #include <impm/system/point_step.h>
 
+#include <algorithm>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impm
@@ -50,6 +55,32 @@ namespace impm
    * F^{-T}@f$ the stress response to a uniform dilatation (see
    * doc/formulation.md, "F-bar", for the derivation).
    *
+   * <b>Cell pressure unknowns</b> (`Material points/Cell pressure
+   * unknowns`). Plain F-bar gives the points of a patch one volume change,
+   * so where their plastic dilatancy differs their elastic volumes, and
+   * with them their pressures, part: a frictional material's strength
+   * follows the pressure, and the points that dilate most lose it. With
+   * pressure unknowns each patch has one pressure @f$p_c@f$, an unknown of
+   * the linear system (Q1/P0 displacement-pressure, the pressure condensed
+   * into nothing else): each point takes the volume change
+   * @f$\Delta J^*_p@f$ at which its in-plane mean Kirchhoff stress
+   * @f$\pi_p@f$ is @f$p_c@f$ (a scalar Newton solve around its return
+   * map), and the patch's equation is that its points' volume is the
+   * kinematic one,
+   * @f[
+   *   R_c = \frac{E}{\hat h}\sum_p V_p^n\,(\Delta J^*_p - \Delta J_p)
+   *     + \frac{\beta\,V_{cell}}{\hat h}\sum_n (p_c - p_n) = 0,
+   * @f]
+   * with @f$E@f$ the body's Young's modulus and @f$\hat h =
+   * V_{cell}^{1/d}@f$ (the row is a force), and the pressure-jump
+   * stabilisation of Q1/P0 (Kechkar and Silvester 1992) over the patches
+   * of the same body in the face neighbours of the patch's cell, factor
+   * @f$\beta@f$ (`Material points/Pressure jump stabilisation`, 0: none).
+   * The tangent follows from @f$d\pi_p = \tilde t_p : G_p + k_p\,
+   * d\ln\Delta J^*_p = dp_c@f$, with @f$t_{kl} = \frac1d \sum_i
+   * \mathcal C_{iikl}@f$, @f$k_p = \mathrm{tr}\,t/d@f$ and
+   * @f$\tilde t = t - k_p I@f$ (doc/formulation.md, "F-bar").
+   *
    * A scene that does not ask for F-bar creates none of this.
    *
    * @tparam dim Space dimension.
@@ -59,19 +90,56 @@ namespace impm
   {
   public:
     /**
-     * @brief Group this step's points into patches (body and cell at the
-     * start of the step), weigh them by their start-of-step volumes and
-     * collect each patch's DoFs in the linear system. Called by
-     * LoadStepSystem::setup() once the system's DoFs are numbered.
+     * @brief Constructor.
+     * @param grid The background grid (cells and their neighbours).
+     * @param pressure_unknowns Whether each patch's pressure is an unknown
+     *   (else its volume change is the points' mean).
+     * @param stabilisation The pressure-jump factor @f$\beta@f$ (pressure
+     *   unknowns only).
      */
-    void
-    setup(const MaterialPoints<dim> &material_points,
-          const LoadStepSystem<dim> &system,
-          const unsigned int         n_local_dofs);
+    FBar(const BackgroundGrid<dim> &grid,
+         const bool                 pressure_unknowns,
+         const double               stabilisation);
 
     /**
-     * @brief The system indices of each patch's DoFs (ascending), for the
-     * sparsity pattern.
+     * @brief Whether the patches' pressures are unknowns of the linear
+     * system.
+     */
+    bool
+    has_pressure_unknowns() const
+    {
+      return pressure_unknowns;
+    }
+
+    /**
+     * @brief Group this step's points into patches (body and cell at the
+     * start of the step). Returns the number of pressure unknowns this
+     * process owns: one per patch with has_pressure_unknowns(), else none.
+     * Called by LoadStepSystem::setup() before it numbers the system.
+     */
+    unsigned int
+    make_patches(const MaterialPoints<dim> &material_points);
+
+    /**
+     * @brief Weigh the patches of make_patches() by their start-of-step
+     * volumes and collect each patch's DoFs in the linear system; with
+     * pressure unknowns, number them from @p first_pressure_index (this
+     * process's, after its nodal rows), start them at the patches' mean
+     * stresses and find each patch's neighbours (on other processes too).
+     * Called by LoadStepSystem::setup() once the system's DoFs are
+     * numbered. Collective.
+     */
+    void
+    setup(const MaterialPoints<dim>    &material_points,
+          const LoadStepSystem<dim>    &system,
+          const unsigned int            n_local_dofs,
+          const types::global_dof_index first_pressure_index,
+          const IndexSet               &owned_rows);
+
+    /**
+     * @brief The system indices of each patch's block (ascending), for the
+     * sparsity pattern: its DoFs and, with pressure unknowns, its own and
+     * its neighbours' pressures.
      */
     std::vector<std::vector<types::global_dof_index>>
     patch_rows() const;
@@ -83,6 +151,56 @@ namespace impm
      */
     void
     average(std::vector<PointStep<dim>> &point_steps);
+
+    /**
+     * @brief With pressure unknowns, the stress update of every point: find
+     * the volume change at which its mean stress is its patch's pressure
+     * and leave the point's PointStep::deformation_increment and update
+     * there.
+     * @param point_steps The points, with the true @f$\Delta F_p@f$ on
+     *   entry (all with positive determinant).
+     * @param update_point Runs point p's return map on its
+     *   PointStep::deformation_increment; false if the model threw.
+     * @return False if a point's return failed or its solve did not
+     *   converge (a wild iterate: the Newton iteration fails).
+     */
+    bool
+    equalise_pressures(std::vector<PointStep<dim>>               &point_steps,
+                       const std::function<bool(unsigned int)> &update_point);
+
+    /**
+     * @brief Start a load step's attempt: the pressure unknowns at the
+     * patches' start-of-step mean stresses, every point at its own volume.
+     */
+    void
+    reset_pressure_unknowns();
+
+    /**
+     * @brief Add the Newton correction @p solution (in the system's
+     * numbering) to the pressure unknowns this process owns.
+     */
+    void
+    add_to_pressure_unknowns(const TrilinosWrappers::MPI::Vector &solution);
+
+    /**
+     * @brief Perturb the pressure unknown (the pressure over E) with
+     * system index @p index by @p amount over h (a strain: as a DoF
+     * perturbed by a fraction of the cell size), if this process
+     * owns it (the tangent check). Returns that scale, or zero if another
+     * process owns it.
+     */
+    double
+    perturb_pressure_unknown(const types::global_dof_index index,
+                             const double                  amount);
+
+    /**
+     * @brief The patches' equations @f$R_c@f$ at the last stress update, on
+     * this process's pressure rows (with the neighbours' contributions
+     * from other processes). Collective.
+     * @return Pairs (system index, @f$R_c@f$), one per owned patch.
+     */
+    const std::vector<std::pair<types::global_dof_index, double>> &
+    pressure_residuals();
 
     /**
      * @brief The point tangent with the F-bar term of point @p p folded in,
@@ -122,6 +240,68 @@ namespace impm
     description() const;
 
   private:
+    /**
+     * @brief add_patch_stiffness() with pressure unknowns: per patch the
+     * column of its pressure, its row and its share of the neighbours'
+     * rows, as one dense block.
+     */
+    template <typename Gradients, typename GradientMaps>
+    void
+    add_pressure_stiffness(const std::vector<PointStep<dim>> &point_steps,
+                           const Gradients                   &gradients,
+                           const GradientMaps                &gradient_maps,
+                           TrilinosWrappers::SparseMatrix    &matrix,
+                           const OffProcessRows &off_process_rows);
+
+    /**
+     * @brief Number the pressure unknowns from @p first_pressure_index,
+     * find each patch's neighbours (their unknowns from their owners for
+     * ghost cells) and make each patch's block. Collective.
+     */
+    void
+    set_up_pressure_unknowns(const MaterialPoints<dim>    &material_points,
+                             const types::global_dof_index first_pressure_index,
+                             const IndexSet               &owned_rows);
+
+    /** The grid: cells, neighbours, cell sizes. */
+    const BackgroundGrid<dim> &grid;
+    /** Whether the patches' pressures are unknowns. */
+    const bool pressure_unknowns;
+    /** The pressure-jump factor beta. */
+    const double stabilisation;
+    /** Per patch: its cell, its body, its start-of-step volume. */
+    std::vector<typename Triangulation<dim>::active_cell_iterator> patch_cell;
+    std::vector<unsigned int>                                      patch_body;
+    std::vector<double>                                            patch_volume;
+    /** Per patch (pressure unknowns only): the unknown's system index, its
+     *  value and its start-of-step value, the body's Young's modulus, the
+     *  row scale E V_c / h. */
+    std::vector<types::global_dof_index> pressure_index;
+    std::vector<double> pressure, start_pressure, modulus, row_scale;
+    /** beta V_cell / h. */
+    double face_coefficient = 0.;
+    /** h = V_cell^(1/d). */
+    double cell_length = 1.;
+    /** Offsets of each patch's neighbours in neighbour_indices (CSR), and
+     *  their pressures' system indices. */
+    std::vector<unsigned int>            neighbour_start;
+    std::vector<types::global_dof_index> neighbour_indices;
+    /** Offsets of each patch's block in block_indices (CSR): the ascending
+     *  union of its DoFs' and pressures' system indices. */
+    std::vector<unsigned int>            block_start;
+    std::vector<types::global_dof_index> block_indices;
+    /** Per point (pressure unknowns only): ln of its volume change, that
+     *  volume change, and its mean stress's response to it (k) and to the
+     *  isochoric part of a perturbation (t~). */
+    std::vector<double>         log_volume, point_volume, bulk_response;
+    std::vector<Tensor<2, dim>> pressure_response;
+    /** The equations' contributions, to owned and neighbours' rows. */
+    TrilinosWrappers::MPI::Vector pressure_rows;
+    /** The owned rows of the last pressure_residuals(). */
+    std::vector<std::pair<types::global_dof_index, double>> residuals;
+    /** The dense block of the current patch. */
+    std::vector<double> block;
+
     /** Offsets of each patch's points in patch_points (CSR). */
     std::vector<unsigned int> patch_start;
     /** The points of the patches, patch after patch. */
@@ -160,6 +340,12 @@ namespace impm
                                  TrilinosWrappers::SparseMatrix &matrix,
                                  const OffProcessRows &off_process_rows)
   {
+    if (has_pressure_unknowns())
+      {
+        add_pressure_stiffness(
+          point_steps, gradients, gradient_maps, matrix, off_process_rows);
+        return;
+      }
     const unsigned int n_patches = mean_jacobian.size();
     for (unsigned int patch = 0; patch < n_patches; ++patch)
       {
@@ -202,6 +388,102 @@ namespace impm
           n_dofs,
           [&](const unsigned int row, const unsigned int column) {
             return coefficient * a[row] * b[column];
+          },
+          matrix,
+          off_process_rows);
+      }
+  }
+
+
+  template <int dim>
+  template <typename Gradients, typename GradientMaps>
+  void
+  FBar<dim>::add_pressure_stiffness(
+    const std::vector<PointStep<dim>> &point_steps,
+    const Gradients                   &gradients,
+    const GradientMaps                &gradient_maps,
+    TrilinosWrappers::SparseMatrix    &matrix,
+    const OffProcessRows              &off_process_rows)
+  {
+    const unsigned int n_patches = mean_jacobian.size();
+    for (unsigned int patch = 0; patch < n_patches; ++patch)
+      {
+        const unsigned int first_dof = dof_start[patch];
+        const unsigned int n_dofs    = dof_start[patch + 1] - first_dof;
+        for (unsigned int k = 0; k < n_dofs; ++k)
+          position_in_patch[patch_dofs[first_dof + k]] = k;
+        // a: the forces' response to the pressure; b: the row's to the
+        // DoFs (over the row scale); the corner: its response to the
+        // pressure (over the row scale).
+        a.assign(n_dofs, 0.);
+        b.assign(n_dofs, 0.);
+        double corner = 0.;
+        for (unsigned int c = patch_start[patch]; c < patch_start[patch + 1];
+             ++c)
+          {
+            const unsigned int    p    = patch_points[c];
+            const PointStep<dim> &step = point_steps[p];
+            const Tensor<1, dim> *g    = gradients(p);
+            const Tensor<2, dim> &map  = gradient_maps(p);
+            const double          k    = bulk_response[p];
+            corner += volume_share[p] * point_volume[p] / k;
+            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+              {
+                const Tensor<1, dim> stress_part = dilatation_stress[p] * g[v];
+                const Tensor<1, dim> spatial     = g[v] * map;
+                const Tensor<1, dim> isochoric =
+                  pressure_response[p] * spatial;
+                for (unsigned int i = 0; i < dim; ++i)
+                  {
+                    const int position =
+                      position_in_patch[step.dofs[v * dim + i]];
+                    if (position < 0)
+                      continue;
+                    a[position] += stress_part[i] / (dim * k);
+                    b[position] -=
+                      volume_share[p] * (point_volume[p] / k * isochoric[i] +
+                                         jacobian[p] * spatial[i]);
+                  }
+              }
+          }
+        for (unsigned int k = 0; k < n_dofs; ++k)
+          position_in_patch[patch_dofs[first_dof + k]] = -1;
+
+        // The block over the patch's DoFs and pressures.
+        const types::global_dof_index *indices =
+          block_indices.data() + block_start[patch];
+        const unsigned int n = block_start[patch + 1] - block_start[patch];
+        const auto position_of = [&](const types::global_dof_index index) {
+          return static_cast<unsigned int>(
+            std::lower_bound(indices, indices + n, index) - indices);
+        };
+        block.assign(n * n, 0.);
+        // The unknown is p_c / E: its column is E times the derivative by
+        // p_c, of the order of the DoFs' columns (a direct solver then
+        // keeps its ordering).
+        const double       E   = modulus[patch];
+        const unsigned int own = position_of(pressure_index[patch]);
+        for (unsigned int k = 0; k < n_dofs; ++k)
+          {
+            const unsigned int r =
+              position_of(patch_system_indices[first_dof + k]);
+            block[r * n + own] = E * a[k];
+            block[own * n + r] = row_scale[patch] * b[k];
+          }
+        const unsigned int n_neighbours =
+          neighbour_start[patch + 1] - neighbour_start[patch];
+        block[own * n + own] =
+          E * (row_scale[patch] * corner + face_coefficient * n_neighbours);
+        for (unsigned int j = neighbour_start[patch];
+             j < neighbour_start[patch + 1];
+             ++j)
+          block[position_of(neighbour_indices[j]) * n + own] =
+            -E * face_coefficient;
+        block_adder.add(
+          indices,
+          n,
+          [&](const unsigned int row, const unsigned int column) {
+            return block[row * n + column];
           },
           matrix,
           off_process_rows);

@@ -257,6 +257,10 @@ namespace impm
       /** Whether the points' volume changes are averaged per cell and body
        *  (FBar). */
       bool f_bar;
+      /** Whether F-bar's patches share a pressure, an unknown (FBar). */
+      bool cell_pressure_unknowns;
+      /** The factor of the penalty on the cell pressures' jumps. */
+      double pressure_jump_stabilisation;
       /** Largest ratio of the most points on a process to the mean before
        *  the grid is repartitioned. */
       double load_imbalance_threshold;

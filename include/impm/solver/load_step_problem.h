@@ -39,12 +39,15 @@ namespace impm
      * @param ghost_stabilisation May be nullptr (no stabilisation).
      * @param rigid_contact May be nullptr (no rigid bodies); its begin()
      *   is the caller's, before begin().
+     * @param f_bar May be nullptr (no F-bar); with its volume unknowns
+     *   their equations join the residual and the Newton corrections.
      */
     LoadStepProblem(const BackgroundGrid<dim>     &grid,
                     LoadStepSystem<dim>           &system,
                     Assembler<dim>                &assembler,
                     const GhostStabilisation<dim> *ghost_stabilisation,
                     RigidContact<dim>             *rigid_contact,
+                    FBar<dim>                     *f_bar,
                     LinearSolver                  &linear_solver,
                     TimerOutput                   &timer);
 
@@ -146,6 +149,8 @@ namespace impm
     Assembler<dim>                &assembler;
     const GhostStabilisation<dim> *ghost_stabilisation;
     RigidContact<dim>             *rigid_contact;
+    /** F-bar, or nullptr; its volume unknowns, if any, are unknowns here. */
+    FBar<dim> *f_bar;
     LinearSolver                  &linear_solver;
     TimerOutput                   &timer;
 
@@ -190,6 +195,13 @@ namespace impm
     LinearSolveReport
     solve_bordered(const double relative_tolerance,
                    const bool   estimate_condition);
+
+    /**
+     * @brief Add the linear solve's solution to the displacement increment
+     * and, with F-bar's volume unknowns, to them.
+     */
+    void
+    add_solution();
 
     /** Whether assemble_matrix() checks its matrix. */
     bool checks_tangent = false;

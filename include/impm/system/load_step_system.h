@@ -128,10 +128,16 @@ namespace impm
 
     /**
      * @brief Set the right-hand side to @p external - @p internal on the
-     * system's DoFs; returns its norm. Collective.
+     * system's DoFs and to minus the residuals @p further_rows on further
+     * rows this process owns (F-bar's volume unknowns); returns its norm.
+     * Collective.
      */
     double
-    set_residual(const NodalVector &external, const NodalVector &internal);
+    set_residual(
+      const NodalVector &external,
+      const NodalVector &internal,
+      const std::vector<std::pair<types::global_dof_index, double>>
+        &further_rows = {});
 
     /**
      * @brief Add the solution to @p increment on the system's DoFs and
@@ -239,6 +245,9 @@ namespace impm
     BasisType                            basis = BasisType::gimp;
     std::vector<types::global_dof_index> index_in_system;
     IndexSet                             owned;
+    /** This process's rows of nodal DoFs (its first rows; F-bar's volume
+     *  unknowns follow them). */
+    types::global_dof_index n_nodal_rows = 0;
   };
 } // namespace impm
 
