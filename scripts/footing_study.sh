@@ -66,7 +66,7 @@ if [ "$which" = mc-pressures ] || [ "$which" = all ]; then
     mc_pressures "mcp_${c}_gimp_pressures" "$cells" GIMP true true
     mc_pressures "mcp_${c}_smpm_none" "$cells" "standard MPM" false false
   done
-  /usr/bin/python3 "$root/doc/scripts/footing_curves.py" "$out/footing_mohr_coulomb_pressures.png" 74.18 0.006 \
+  /usr/bin/python3 "$root/doc/scripts/footing_curves.py" "$out/footing_mohr_coulomb_pressures.png" 74.17 0.006 \
     "h = 0.25 m, cell pressures=$out/mcp_20x9_smpm_pressures/steps.csv" \
     "h = 0.25 m, no F-bar=$out/mcp_20x9_smpm_none/steps.csv" \
     "h = 0.125 m, cell pressures=$out/mcp_40x18_smpm_pressures/steps.csv" \

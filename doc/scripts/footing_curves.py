@@ -6,7 +6,8 @@ Usage: footing_curves.py OUT.png PRANDTL_KN SETTLEMENT_M LABEL=steps.csv ...
 Each run's steps.csv gives the footing load (-reaction_y+_y, kN per m of
 half footing) against the settlement (load factor x SETTLEMENT_M); runs
 whose label names "F-bar on" or "cell pressures" are solid, the others
-dashed; the dotted line is Prandtl's limit load. Used by
+dashed, each pair of runs in one colour; the dotted line is Prandtl's
+limit load. Used by
 scripts/footing_study.sh.
 """
 import csv
@@ -37,7 +38,9 @@ def main():
         label, path = spec.rsplit("=", 1)
         xs, ys = curve(path, settlement)
         solid = "F-bar on" in label or "cell pressures" in label
-        ax.plot(xs, ys, styles[0 if solid else 1], label=label)
+        # Runs come in pairs (one cell size, two treatments): one colour.
+        ax.plot(xs, ys, styles[0 if solid else 1], color="C%d" % (k // 2),
+                label=label)
     ax.axhline(prandtl, color="k", linestyle=":", label="Prandtl's limit load")
     ax.set_xlabel("settlement (mm)")
     ax.set_ylabel("load on the half footing (kN/m)")

@@ -57,7 +57,8 @@ namespace impm
         }
     };
     std::vector<ArrayView<const double>> point_properties;
-    const bool with_pressures = f_bar != nullptr && f_bar->has_pressure_unknowns();
+    const bool                           with_pressures =
+      f_bar != nullptr && f_bar->has_pressure_unknowns();
     if (with_pressures)
       point_properties.reserve(system.point_steps.size());
     for (const auto &point : material_points.particles())

@@ -1,7 +1,7 @@
+#include <deal.II/grid/grid_tools.h>
+
 #include <impm/assembly/f_bar.h>
 #include <impm/system/load_step_system.h>
-
-#include <deal.II/grid/grid_tools.h>
 
 #include <algorithm>
 #include <cmath>
@@ -155,8 +155,8 @@ namespace impm
     const types::global_dof_index first_pressure_index,
     const IndexSet               &owned_rows)
   {
-    const unsigned int n_patches = patch_start.size() - 1;
-    const unsigned int n_points  = patch_points.size();
+    const unsigned int n_patches   = patch_start.size() - 1;
+    const unsigned int n_points    = patch_points.size();
     double             cell_volume = 1.;
     for (unsigned int d = 0; d < dim; ++d)
       cell_volume *= grid.cartesian().cell_size[d];
@@ -175,9 +175,9 @@ namespace impm
           double                sum = 0.;
           for (unsigned int i = 0; i < dim; ++i)
             sum += tau[i][i];
-          start_stress[p]  = sum / dim;
-          point_modulus[p] = material_points.material_of(properties)
-                               .elastic_modulus();
+          start_stress[p] = sum / dim;
+          point_modulus[p] =
+            material_points.material_of(properties).elastic_modulus();
           ++p;
         }
     }
@@ -207,9 +207,11 @@ namespace impm
         patches_of_cell[patch_cell[patch]->active_cell_index()].emplace_back(
           patch_body[patch], pressure_index[patch]);
       }
-    pressure = start_pressure;
+    pressure                  = start_pressure;
     const auto &triangulation = grid.get_triangulation();
-    if (Utilities::MPI::n_mpi_processes(triangulation.get_communicator()) > 1)
+    // Neighbours only matter to the stabilisation.
+    if (stabilisation > 0. &&
+        Utilities::MPI::n_mpi_processes(triangulation.get_communicator()) > 1)
       GridTools::exchange_cell_data_to_ghosts<CellPatches, Triangulation<dim>>(
         triangulation,
         [&](const typename Triangulation<dim>::active_cell_iterator &cell)
@@ -224,18 +226,23 @@ namespace impm
           patches_of_cell[cell->active_cell_index()] = data;
         });
 
-    // Each patch's neighbours: the patches of its body in the cells that
-    // share a face with its cell.
+    // Each patch's neighbours (with a stabilisation): the patches of its
+    // body in the cells that share a face with its cell. Its blocks: its
+    // DoFs with its pressure, and its pressure with its neighbours'.
     neighbour_start.assign(1, 0);
     neighbour_indices.clear();
     block_start.assign(1, 0);
     block_indices.clear();
+    jump_start.assign(1, 0);
+    jump_indices.clear();
     std::vector<types::global_dof_index> ghosts;
     for (unsigned int patch = 0; patch < n_patches; ++patch)
       {
         const auto &cell = patch_cell[patch];
         for (const unsigned int f : cell->face_indices())
           {
+            if (!(stabilisation > 0.))
+              break;
             if (cell->at_boundary(f) || !cell->neighbor(f)->is_active())
               continue;
             const auto found =
@@ -257,12 +264,19 @@ namespace impm
                              patch_system_indices.begin() +
                                dof_start[patch + 1]);
         block_indices.push_back(pressure_index[patch]);
-        block_indices.insert(block_indices.end(),
-                             neighbour_indices.begin() +
-                               neighbour_start[patch],
-                             neighbour_indices.end());
         std::sort(block_indices.begin() + first_block, block_indices.end());
         block_start.push_back(block_indices.size());
+        if (neighbour_start[patch + 1] > neighbour_start[patch])
+          {
+            const auto first_jump = jump_indices.size();
+            jump_indices.push_back(pressure_index[patch]);
+            jump_indices.insert(jump_indices.end(),
+                                neighbour_indices.begin() +
+                                  neighbour_start[patch],
+                                neighbour_indices.end());
+            std::sort(jump_indices.begin() + first_jump, jump_indices.end());
+          }
+        jump_start.push_back(jump_indices.size());
       }
     std::sort(ghosts.begin(), ghosts.end());
     ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
@@ -284,8 +298,13 @@ namespace impm
     rows.reserve(mean_jacobian.size());
     for (unsigned int patch = 0; patch < mean_jacobian.size(); ++patch)
       if (has_pressure_unknowns())
-        rows.emplace_back(block_indices.begin() + block_start[patch],
-                          block_indices.begin() + block_start[patch + 1]);
+        {
+          rows.emplace_back(block_indices.begin() + block_start[patch],
+                            block_indices.begin() + block_start[patch + 1]);
+          if (jump_start[patch + 1] > jump_start[patch])
+            rows.emplace_back(jump_indices.begin() + jump_start[patch],
+                              jump_indices.begin() + jump_start[patch + 1]);
+        }
       else if (dof_start[patch + 1] > dof_start[patch])
         rows.emplace_back(patch_system_indices.begin() + dof_start[patch],
                           patch_system_indices.begin() + dof_start[patch + 1]);
@@ -334,7 +353,7 @@ namespace impm
     Tensor<4, 3>           C;
     for (unsigned int patch = 0; patch < mean_jacobian.size(); ++patch)
       {
-        const double target    = pressure[patch];
+        const double target = pressure[patch];
         // Met when the mean stress is within a few round-offs of the
         // target (E times 1e-16 is the round-off of a Hencky stress) or
         // the step in ln dJ* is; a solve that stops short of that but
@@ -347,14 +366,14 @@ namespace impm
         for (unsigned int c = patch_start[patch]; c < patch_start[patch + 1];
              ++c)
           {
-            const unsigned int   p    = patch_points[c];
-            PointStep<dim>      &step = point_steps[p];
+            const unsigned int   p              = patch_points[c];
+            PointStep<dim>      &step           = point_steps[p];
             const Tensor<2, dim> true_increment = step.deformation_increment;
-            jacobian[p]       = determinant(true_increment);
-            const double log_jacobian = std::log(jacobian[p]);
-            double      &lambda       = log_volume[p];
-            bool         converged    = false;
-            double       residual     = 0.;
+            jacobian[p]                         = determinant(true_increment);
+            const double log_jacobian           = std::log(jacobian[p]);
+            double      &lambda                 = log_volume[p];
+            bool         converged              = false;
+            double       residual               = 0.;
             for (unsigned int iteration = 0; iteration < max_iterations;
                  ++iteration)
               {
@@ -379,23 +398,17 @@ namespace impm
                 const double slope = trace(t) / dim;
                 for (unsigned int k = 0; k < dim; ++k)
                   t[k][k] -= slope;
-                bulk_response[p] =
-                  std::max(slope, 1e-8 * modulus[patch]);
+                bulk_response[p]     = std::max(slope, 1e-8 * modulus[patch]);
                 pressure_response[p] = t;
-                if (std::abs(residual) <= tolerance)
-                  {
-                    converged = true;
-                    break;
-                  }
+                // lambda stays the one just evaluated when the loop ends.
                 const double step_length =
                   -residual /
                   (slope > 1e-3 * modulus[patch] ? slope : modulus[patch]);
+                converged = std::abs(residual) <= tolerance ||
+                            std::abs(step_length) < 1e-16;
+                if (converged || iteration + 1 == max_iterations)
+                  break;
                 lambda += std::max(-0.05, std::min(0.05, step_length));
-                if (std::abs(step_length) < 1e-16)
-                  {
-                    converged = true;
-                    break;
-                  }
               }
             if ((!converged && !(std::abs(residual) <= acceptable)) ||
                 !std::isfinite(lambda))
@@ -460,7 +473,8 @@ namespace impm
              ++c)
           {
             const unsigned int p = patch_points[c];
-            volume_difference += volume_share[p] * (point_volume[p] - jacobian[p]);
+            volume_difference +=
+              volume_share[p] * (point_volume[p] - jacobian[p]);
           }
         const unsigned int n_neighbours =
           neighbour_start[patch + 1] - neighbour_start[patch];
@@ -502,7 +516,7 @@ namespace impm
         for (unsigned int k = 0; k < dim; ++k)
           for (unsigned int q = 0; q < dim; ++q)
             D[i][j] += tangent[i][j][k][q] * reference[k][q];
-    dilatation_stress[p]     = D;
+    dilatation_stress[p] = D;
     // With pressure unknowns the point's volume also follows the
     // isochoric part of the perturbation: d ln dJ* = -(t~ : G) / k.
     Tensor<2, dim> map = gradient_map;

@@ -328,10 +328,10 @@ namespace impm
     MaterialPoints::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Material points");
-      basis                    = basis_type_from_string(prm.get("Basis"));
-      update_domains           = prm.get_bool("Update domains");
-      f_bar                    = prm.get_bool("F-bar");
-      cell_pressure_unknowns   = prm.get_bool("Cell pressure unknowns");
+      basis                  = basis_type_from_string(prm.get("Basis"));
+      update_domains         = prm.get_bool("Update domains");
+      f_bar                  = prm.get_bool("F-bar");
+      cell_pressure_unknowns = prm.get_bool("Cell pressure unknowns");
       pressure_jump_stabilisation =
         prm.get_double("Pressure jump stabilisation");
       if (cell_pressure_unknowns && !f_bar)

@@ -22,7 +22,8 @@ namespace impm
     , assembler(assembler)
     , ghost_stabilisation(ghost_stabilisation)
     , rigid_contact(rigid_contact)
-    , f_bar(f_bar != nullptr && f_bar->has_pressure_unknowns() ? f_bar : nullptr)
+    , f_bar(f_bar != nullptr && f_bar->has_pressure_unknowns() ? f_bar :
+                                                                 nullptr)
     , linear_solver(linear_solver)
     , timer(timer)
   {
@@ -77,12 +78,11 @@ namespace impm
     if (rigid_contact != nullptr)
       rigid_contact->add_forces(system, displacement_increment, internal_force);
     internal_force.compress(VectorOperation::add);
-    double norm =
-      f_bar != nullptr ?
-        system.set_residual(external_force,
-                            internal_force,
-                            f_bar->pressure_residuals()) :
-        system.set_residual(external_force, internal_force);
+    double norm = f_bar != nullptr ?
+                    system.set_residual(external_force,
+                                        internal_force,
+                                        f_bar->pressure_residuals()) :
+                    system.set_residual(external_force, internal_force);
     // Without external loads (a prescribed displacement), the residual is
     // measured against the internal forces, which carry the reactions.
     double reference = external_force_norm;
@@ -171,8 +171,7 @@ namespace impm
         values[r] = internal_force.local_element(rows[r].second);
       // F-bar's pressure rows: their equations.
       if (f_bar != nullptr)
-        for (const auto &[row, residual] :
-             f_bar->pressure_residuals())
+        for (const auto &[row, residual] : f_bar->pressure_residuals())
           values.push_back(residual);
       // Then the unknowns' forces: the residual's change with the sign
       // turned (the applied force is fixed).
@@ -186,8 +185,7 @@ namespace impm
     // F-bar's pressure rows (their unknowns follow the nodal rows).
     std::vector<types::global_dof_index> pressure_rows;
     if (f_bar != nullptr)
-      for (const auto &[row, residual] :
-           f_bar->pressure_residuals())
+      for (const auto &[row, residual] : f_bar->pressure_residuals())
         pressure_rows.push_back(row);
     // A perturbation small against the cells, large against round-off.
     double cell = std::numeric_limits<double>::max();
@@ -208,7 +206,7 @@ namespace impm
         // the cell size (the pressure over E: a strain), which all
         // processes learn.
         double     pressure_scale = 0.;
-        const auto perturb = [&](const double amount) {
+        const auto perturb        = [&](const double amount) {
           displacement_increment.zero_out_ghost_values();
           if (local != numbers::invalid_unsigned_int)
             displacement_increment.local_element(local) += amount;
@@ -220,9 +218,8 @@ namespace impm
         const bool owns_column =
           local != numbers::invalid_unsigned_int || pressure_scale > 0.;
         const double amount_scale =
-          f_bar != nullptr ?
-            Utilities::MPI::max(pressure_scale, communicator) :
-            0.;
+          f_bar != nullptr ? Utilities::MPI::max(pressure_scale, communicator) :
+                             0.;
         internal_force_at(plus);
         // A contact whose state differs between the iterate and a
         // perturbed one (a face within the perturbation of the surface or
@@ -244,7 +241,7 @@ namespace impm
           const double difference =
             (plus[r] - minus[r]) /
             (2. * perturbation * (amount_scale > 0. ? amount_scale : 1.));
-          largest_entry           = std::max(largest_entry, std::abs(entry));
+          largest_entry = std::max(largest_entry, std::abs(entry));
           largest_difference =
             std::max(largest_difference, std::abs(entry - difference));
         };

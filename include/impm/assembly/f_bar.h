@@ -165,7 +165,7 @@ namespace impm
      *   converge (a wild iterate: the Newton iteration fails).
      */
     bool
-    equalise_pressures(std::vector<PointStep<dim>>               &point_steps,
+    equalise_pressures(std::vector<PointStep<dim>>             &point_steps,
                        const std::function<bool(unsigned int)> &update_point);
 
     /**
@@ -241,9 +241,10 @@ namespace impm
 
   private:
     /**
-     * @brief add_patch_stiffness() with pressure unknowns: per patch the
-     * column of its pressure, its row and its share of the neighbours'
-     * rows, as one dense block.
+     * @brief add_patch_stiffness() with pressure unknowns: per patch one
+     * dense block over its DoFs and its pressure (the pressure's column
+     * and the patch's row) and, with a stabilisation, one over its
+     * pressure and its neighbours' (its share of their rows).
      */
     template <typename Gradients, typename GradientMaps>
     void
@@ -251,7 +252,7 @@ namespace impm
                            const Gradients                   &gradients,
                            const GradientMaps                &gradient_maps,
                            TrilinosWrappers::SparseMatrix    &matrix,
-                           const OffProcessRows &off_process_rows);
+                           const OffProcessRows              &off_process_rows);
 
     /**
      * @brief Number the pressure unknowns from @p first_pressure_index,
@@ -287,9 +288,14 @@ namespace impm
     std::vector<unsigned int>            neighbour_start;
     std::vector<types::global_dof_index> neighbour_indices;
     /** Offsets of each patch's block in block_indices (CSR): the ascending
-     *  union of its DoFs' and pressures' system indices. */
+     *  system indices of its DoFs and its pressure. */
     std::vector<unsigned int>            block_start;
     std::vector<types::global_dof_index> block_indices;
+    /** Offsets of each patch's stabilisation block in jump_indices (CSR;
+     *  empty without neighbours): its pressure's and its neighbours'
+     *  system indices, ascending. */
+    std::vector<unsigned int>            jump_start;
+    std::vector<types::global_dof_index> jump_indices;
     /** Per point (pressure unknowns only): ln of its volume change, that
      *  volume change, and its mean stress's response to it (k) and to the
      *  isochoric part of a perturbation (t~). */
@@ -431,8 +437,7 @@ namespace impm
               {
                 const Tensor<1, dim> stress_part = dilatation_stress[p] * g[v];
                 const Tensor<1, dim> spatial     = g[v] * map;
-                const Tensor<1, dim> isochoric =
-                  pressure_response[p] * spatial;
+                const Tensor<1, dim> isochoric = pressure_response[p] * spatial;
                 for (unsigned int i = 0; i < dim; ++i)
                   {
                     const int position =
@@ -449,10 +454,10 @@ namespace impm
         for (unsigned int k = 0; k < n_dofs; ++k)
           position_in_patch[patch_dofs[first_dof + k]] = -1;
 
-        // The block over the patch's DoFs and pressures.
+        // The block over the patch's DoFs and pressure.
         const types::global_dof_index *indices =
           block_indices.data() + block_start[patch];
-        const unsigned int n = block_start[patch + 1] - block_start[patch];
+        const unsigned int n   = block_start[patch + 1] - block_start[patch];
         const auto position_of = [&](const types::global_dof_index index) {
           return static_cast<unsigned int>(
             std::lower_bound(indices, indices + n, index) - indices);
@@ -470,20 +475,34 @@ namespace impm
             block[r * n + own] = E * a[k];
             block[own * n + r] = row_scale[patch] * b[k];
           }
-        const unsigned int n_neighbours =
-          neighbour_start[patch + 1] - neighbour_start[patch];
-        block[own * n + own] =
-          E * (row_scale[patch] * corner + face_coefficient * n_neighbours);
-        for (unsigned int j = neighbour_start[patch];
-             j < neighbour_start[patch + 1];
-             ++j)
-          block[position_of(neighbour_indices[j]) * n + own] =
-            -E * face_coefficient;
+        block[own * n + own] = E * row_scale[patch] * corner;
         block_adder.add(
           indices,
           n,
           [&](const unsigned int row, const unsigned int column) {
             return block[row * n + column];
+          },
+          matrix,
+          off_process_rows);
+
+        // The stabilisation: this pressure's share of its own row and of
+        // its neighbours' (a neighbour on another process: its row goes
+        // to its owner).
+        const unsigned int n_jump = jump_start[patch + 1] - jump_start[patch];
+        if (n_jump == 0)
+          continue;
+        const types::global_dof_index *jump =
+          jump_indices.data() + jump_start[patch];
+        const unsigned int own_jump = static_cast<unsigned int>(
+          std::lower_bound(jump, jump + n_jump, pressure_index[patch]) - jump);
+        const double coefficient = E * face_coefficient;
+        block_adder.add(
+          jump,
+          n_jump,
+          [&](const unsigned int row, const unsigned int column) {
+            if (column != own_jump)
+              return 0.;
+            return row == own_jump ? coefficient * (n_jump - 1) : -coefficient;
           },
           matrix,
           off_process_rows);

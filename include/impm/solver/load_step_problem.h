@@ -150,9 +150,9 @@ namespace impm
     const GhostStabilisation<dim> *ghost_stabilisation;
     RigidContact<dim>             *rigid_contact;
     /** F-bar, or nullptr; its volume unknowns, if any, are unknowns here. */
-    FBar<dim> *f_bar;
-    LinearSolver                  &linear_solver;
-    TimerOutput                   &timer;
+    FBar<dim>    *f_bar;
+    LinearSolver &linear_solver;
+    TimerOutput  &timer;
 
     /** Displacement increment of the step (full numbering, ghosted). */
     NodalVector displacement_increment;

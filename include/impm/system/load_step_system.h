@@ -133,11 +133,10 @@ namespace impm
      * Collective.
      */
     double
-    set_residual(
-      const NodalVector &external,
-      const NodalVector &internal,
-      const std::vector<std::pair<types::global_dof_index, double>>
-        &further_rows = {});
+    set_residual(const NodalVector &external,
+                 const NodalVector &internal,
+                 const std::vector<std::pair<types::global_dof_index, double>>
+                   &further_rows = {});
 
     /**
      * @brief Add the solution to @p increment on the system's DoFs and
