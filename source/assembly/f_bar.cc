@@ -142,6 +142,7 @@ namespace impm
       }
     if (has_pressure_unknowns())
       set_up_pressure_unknowns(material_points,
+                               point_steps,
                                first_pressure_index,
                                owned_rows);
   }
@@ -151,9 +152,10 @@ namespace impm
   template <int dim>
   void
   FBar<dim>::set_up_pressure_unknowns(
-    const MaterialPoints<dim>    &material_points,
-    const types::global_dof_index first_pressure_index,
-    const IndexSet               &owned_rows)
+    const MaterialPoints<dim>         &material_points,
+    const std::vector<PointStep<dim>> &point_steps,
+    const types::global_dof_index      first_pressure_index,
+    const IndexSet                    &owned_rows)
   {
     const unsigned int n_patches   = patch_start.size() - 1;
     const unsigned int n_points    = patch_points.size();
@@ -163,22 +165,18 @@ namespace impm
     cell_length      = std::pow(cell_volume, 1. / dim);
     face_coefficient = stabilisation * cell_volume / cell_length;
 
-    // Each point's mean stress and modulus at the start of the step.
-    std::vector<double> start_stress(n_points), point_modulus(n_points);
+    // Each point's mean stress at the start of the step.
+    std::vector<double> start_stress(n_points);
     {
       unsigned int p = 0;
       for (const auto &point : material_points.particles())
         {
-          const auto            properties = point.get_properties();
-          const PointState<dim> state(properties);
-          const auto            tau = state.kirchhoff_stress();
-          double                sum = 0.;
+          const auto tau =
+            PointState<dim>(point.get_properties()).kirchhoff_stress();
+          double sum = 0.;
           for (unsigned int i = 0; i < dim; ++i)
             sum += tau[i][i];
-          start_stress[p] = sum / dim;
-          point_modulus[p] =
-            material_points.material_of(properties).elastic_modulus();
-          ++p;
+          start_stress[p++] = sum / dim;
         }
     }
     log_volume.assign(n_points, 0.);
@@ -202,7 +200,8 @@ namespace impm
              ++c)
           start_pressure[patch] +=
             volume_share[patch_points[c]] * start_stress[patch_points[c]];
-        modulus[patch]   = point_modulus[patch_points[patch_start[patch]]];
+        modulus[patch] = point_steps[patch_points[patch_start[patch]]]
+                           .material->elastic_modulus();
         row_scale[patch] = modulus[patch] * patch_volume[patch] / cell_length;
         patches_of_cell[patch_cell[patch]->active_cell_index()].emplace_back(
           patch_body[patch], pressure_index[patch]);

@@ -106,7 +106,7 @@ namespace impm
                           grid.locally_owned_dofs().nth_index_in_set(i));
         n_local_system += in_system[i];
       }
-    // With volume unknowns (F-bar's stabilisation), this process's patches
+    // With F-bar's cell pressure unknowns, this process's patches
     // follow its nodal rows.
     n_nodal_rows = n_local_system;
     if (f_bar != nullptr)

@@ -137,9 +137,10 @@ namespace impm
           const IndexSet               &owned_rows);
 
     /**
-     * @brief The system indices of each patch's block (ascending), for the
-     * sparsity pattern: its DoFs and, with pressure unknowns, its own and
-     * its neighbours' pressures.
+     * @brief The system indices of each patch's blocks (ascending), for
+     * the sparsity pattern: its DoFs (and, with pressure unknowns, its
+     * pressure) and, with a stabilisation, its pressure and its
+     * neighbours'.
      */
     std::vector<std::vector<types::global_dof_index>>
     patch_rows() const;
@@ -260,7 +261,8 @@ namespace impm
      * ghost cells) and make each patch's block. Collective.
      */
     void
-    set_up_pressure_unknowns(const MaterialPoints<dim>    &material_points,
+    set_up_pressure_unknowns(const MaterialPoints<dim>         &material_points,
+                             const std::vector<PointStep<dim>> &point_steps,
                              const types::global_dof_index first_pressure_index,
                              const IndexSet               &owned_rows);
 

@@ -39,7 +39,7 @@ namespace impm
      * @param ghost_stabilisation May be nullptr (no stabilisation).
      * @param rigid_contact May be nullptr (no rigid bodies); its begin()
      *   is the caller's, before begin().
-     * @param f_bar May be nullptr (no F-bar); with its volume unknowns
+     * @param f_bar May be nullptr (no F-bar); with its cell pressure unknowns
      *   their equations join the residual and the Newton corrections.
      */
     LoadStepProblem(const BackgroundGrid<dim>     &grid,
@@ -149,7 +149,7 @@ namespace impm
     Assembler<dim>                &assembler;
     const GhostStabilisation<dim> *ghost_stabilisation;
     RigidContact<dim>             *rigid_contact;
-    /** F-bar, or nullptr; its volume unknowns, if any, are unknowns here. */
+    /** F-bar, or nullptr; its cell pressures, if any, are unknowns here. */
     FBar<dim>    *f_bar;
     LinearSolver &linear_solver;
     TimerOutput  &timer;
@@ -198,7 +198,7 @@ namespace impm
 
     /**
      * @brief Add the linear solve's solution to the displacement increment
-     * and, with F-bar's volume unknowns, to them.
+     * and, with F-bar's cell pressures, to them.
      */
     void
     add_solution();

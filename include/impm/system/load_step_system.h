@@ -129,7 +129,7 @@ namespace impm
     /**
      * @brief Set the right-hand side to @p external - @p internal on the
      * system's DoFs and to minus the residuals @p further_rows on further
-     * rows this process owns (F-bar's volume unknowns); returns its norm.
+     * rows this process owns (F-bar's cell pressures); returns its norm.
      * Collective.
      */
     double
@@ -244,8 +244,8 @@ namespace impm
     BasisType                            basis = BasisType::gimp;
     std::vector<types::global_dof_index> index_in_system;
     IndexSet                             owned;
-    /** This process's rows of nodal DoFs (its first rows; F-bar's volume
-     *  unknowns follow them). */
+    /** This process's rows of nodal DoFs (its first rows; F-bar's cell
+     *  pressures follow them). */
     types::global_dof_index n_nodal_rows = 0;
   };
 } // namespace impm
