@@ -9,6 +9,7 @@
 #include <impm/core/default_scene.h>
 #include <impm/core/parameters.h>
 #include <impm/core/run.h>
+#include <impm/coupling/coupling.h>
 #include <impm/io/scene_input.h>
 
 #include <csignal>
@@ -120,6 +121,7 @@ main(int argc, char **argv)
 
       dealii::ParameterHandler prm;
       impm::Parameters::declare_all(prm);
+      impm::Couplings<2>::declare_parameters(prm);
       if (print_parameters)
         {
           if (is_root)

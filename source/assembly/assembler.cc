@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <impm/assembly/assembler.h>
+#include <impm/assembly/dense_block_adder.h>
 #include <impm/mechanics/equilibrium_forms.h>
 #include <impm/mechanics/point_stiffness.h>
 #include <impm/mechanics/pulled_back_stress.h>
@@ -16,12 +17,12 @@ namespace impm
     const MaterialPoints<dim>                            &material_points,
     LoadStepSystem<dim>                                  &system,
     const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
-    FBar<dim>                                            *f_bar,
+    Coupling<dim>                                        *volume_coupling,
     const MPI_Comm                                        communicator)
     : material_points(material_points)
     , system(system)
     , force_effects(force_effects)
-    , f_bar(f_bar)
+    , volume_coupling(volume_coupling)
     , communicator(communicator)
   {}
 
@@ -35,7 +36,8 @@ namespace impm
     bool               admissible = true;
     const unsigned int hardening_index =
       material_points.layout().plastic_multiplier;
-    // The return map of one point (once its increment is known).
+    // The return map of one point (once its increment is known); false
+    // if it failed.
     const auto update_point = [&](PointStep<dim>                &step,
                                   const ArrayView<const double> &properties) {
       // An increment whose trial elastic strain is not positive definite
@@ -50,20 +52,20 @@ namespace impm
               0. :
               properties[hardening_index],
             step.update);
+          return true;
         }
       catch (const ExceptionBase &)
         {
           admissible = false;
+          return false;
         }
     };
     std::vector<ArrayView<const double>> point_properties;
-    const bool                           with_pressures =
-      f_bar != nullptr && f_bar->has_pressure_unknowns();
-    if (with_pressures)
+    if (volume_coupling != nullptr)
       point_properties.reserve(system.point_steps.size());
     for (const auto &point : material_points.particles())
       {
-        if (with_pressures)
+        if (volume_coupling != nullptr)
           point_properties.push_back(point.get_properties());
         PointStep<dim> &step = system.point_steps[p++];
         const auto     &s    = step.support;
@@ -85,28 +87,18 @@ namespace impm
             continue;
           }
         step.deformation_increment_inverse = invert(dF);
-        // Without F-bar each point is updated at once; with it, after the
-        // patches' mean volume changes are known.
-        if (f_bar == nullptr)
+        // Without a coupling that sets the volumes each point is updated
+        // at once; with it, through the coupling once every increment is
+        // known.
+        if (volume_coupling == nullptr)
           update_point(step, point.get_properties());
       }
-    if (with_pressures &&
+    if (volume_coupling != nullptr &&
         Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1)
-      // Each point's volume from its patch's pressure, through its
-      // return map.
-      admissible = f_bar->equalise_pressures(
+      admissible = volume_coupling->update_stresses(
         system.point_steps, [&](const unsigned int q) {
-          update_point(system.point_steps[q], point_properties[q]);
-          return admissible;
+          return update_point(system.point_steps[q], point_properties[q]);
         });
-    else if (f_bar != nullptr &&
-             Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1)
-      {
-        f_bar->average(system.point_steps);
-        p = 0;
-        for (const auto &point : material_points.particles())
-          update_point(system.point_steps[p++], point.get_properties());
-      }
     return Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1;
   }
 
@@ -187,14 +179,32 @@ namespace impm
         const MaterialPoints<dim>                            &material_points,
         LoadStepSystem<dim>                                  &system,
         const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
-        FBar<dim>                                            *f_bar,
+        Coupling<dim>                                        *volume_coupling,
         const MPI_Comm                                        communicator)
         : Assembler<dim>(material_points,
                          system,
                          force_effects,
-                         f_bar,
+                         volume_coupling,
                          communicator)
       {}
+
+      const Tensor<1, dim> *
+      gradients(const unsigned int p) const override
+      {
+        if constexpr (maps_gradients)
+          return mapped_gradients[p].data();
+        else
+          return this->system.point_steps[p].support.gradients.data();
+      }
+
+      Tensor<2, dim>
+      gradient_map(const unsigned int p) const override
+      {
+        if constexpr (maps_gradients)
+          return unit_symmetric_tensor<dim>();
+        else
+          return this->system.point_steps[p].deformation_increment_inverse;
+      }
 
       void
       add_internal_force(NodalVector &internal_force) override
@@ -235,20 +245,8 @@ namespace impm
       void
       add_stiffness(TrilinosWrappers::SparseMatrix &matrix) const override
       {
-        const auto &point_steps = this->system.point_steps;
-        FBar<dim>  *f_bar       = this->f_bar;
-        // The map of the statement's gradients to the current
-        // configuration (F-bar only).
-        const auto gradient_map = [&](const unsigned int p) {
-          if constexpr (maps_gradients)
-            return unit_symmetric_tensor<dim>();
-          else
-            return point_steps[p].deformation_increment_inverse;
-        };
-        const auto gradients_of = [&](const unsigned int p) {
-          return maps_gradients ? mapped_gradients[p].data() :
-                                  point_steps[p].support.gradients.data();
-        };
+        const auto    &point_steps     = this->system.point_steps;
+        Coupling<dim> *volume_coupling = this->volume_coupling;
         // One support's dense matrix (52 kB in 3D): on the heap.
         const auto stiffness = std::make_unique<PointStiffness<dim>>();
         std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>
@@ -257,9 +255,9 @@ namespace impm
           {
             // The group's matrix over all its support's DoFs; the rows and
             // columns in the linear system are picked when it is added.
-            // F-bar's point term has no major symmetry.
+            // A volume coupling's point term has no major symmetry.
             const bool symmetric =
-              f_bar == nullptr &&
+              volume_coupling == nullptr &&
               std::all_of(
                 group.points.begin(),
                 group.points.end(),
@@ -278,15 +276,15 @@ namespace impm
                                 step.update,
                                 step.deformation_increment_inverse,
                                 step.initial_volume);
-                if (f_bar != nullptr)
-                  tangent = f_bar->point_tangent(
+                if (volume_coupling != nullptr)
+                  tangent = volume_coupling->point_tangent(
                     p,
                     tangent,
                     Form::force_stress(step.update,
                                        step.deformation_increment_inverse,
                                        step.initial_volume),
                     gradient_map(p));
-                const Tensor<1, dim> *gradients = gradients_of(p);
+                const Tensor<1, dim> *gradients = this->gradients(p);
                 if (!group.node_positions.empty())
                   {
                     // The point's gradients on the group's support, zero
@@ -318,12 +316,6 @@ namespace impm
                             matrix,
                             this->system.off_process_rows);
           }
-        if (f_bar != nullptr)
-          f_bar->add_patch_stiffness(point_steps,
-                                     gradients_of,
-                                     gradient_map,
-                                     matrix,
-                                     this->system.off_process_rows);
       }
 
     private:
@@ -349,19 +341,25 @@ namespace impm
     const MaterialPoints<dim>                            &material_points,
     LoadStepSystem<dim>                                  &system,
     const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
-    FBar<dim>                                            *f_bar,
+    Coupling<dim>                                        *volume_coupling,
     const MPI_Comm                                        communicator)
   {
     switch (formulation)
       {
         case Parameters::Formulation::updated_lagrangian:
           return std::make_unique<
-            FormAssembler<dim, UpdatedLagrangianForm<dim>>>(
-            material_points, system, force_effects, f_bar, communicator);
+            FormAssembler<dim, UpdatedLagrangianForm<dim>>>(material_points,
+                                                            system,
+                                                            force_effects,
+                                                            volume_coupling,
+                                                            communicator);
         default:
           return std::make_unique<
-            FormAssembler<dim, PreviouslyConvergedForm<dim>>>(
-            material_points, system, force_effects, f_bar, communicator);
+            FormAssembler<dim, PreviouslyConvergedForm<dim>>>(material_points,
+                                                              system,
+                                                              force_effects,
+                                                              volume_coupling,
+                                                              communicator);
       }
   }
 

@@ -31,8 +31,9 @@ namespace impm
 
   template <int dim>
   void
-  GhostStabilisation<dim>::setup(const MaterialPoints<dim> &material_points,
-                                 const std::vector<bool>   &touched)
+  GhostStabilisation<dim>::choose_faces(
+    const MaterialPoints<dim> &material_points,
+    const std::vector<bool>   &touched)
   {
     face_penalties.clear();
     const auto &dof_handler = grid.get_dof_handler();
@@ -162,8 +163,8 @@ namespace impm
 
   template <int dim>
   void
-  GhostStabilisation<dim>::add_forces(const NodalVector &increment,
-                                      NodalVector       &internal_force) const
+  GhostStabilisation<dim>::add_penalty_forces(const NodalVector &increment,
+                                              NodalVector &internal_force) const
   {
     Vector<double> face_increment, face_force;
     for (const FacePenalty &face : face_penalties)
@@ -182,7 +183,7 @@ namespace impm
 
   template <int dim>
   void
-  GhostStabilisation<dim>::add_matrix(
+  GhostStabilisation<dim>::add_penalty_matrix(
     const LoadStepSystem<dim>      &system,
     TrilinosWrappers::SparseMatrix &matrix) const
   {
@@ -271,6 +272,85 @@ namespace impm
 
 
 
+  template <int dim>
+  GhostStabilisation<dim>::GhostStabilisation(const CouplingInputs<dim> &inputs)
+    : GhostStabilisation(inputs.parameters.stabilisation,
+                         inputs.grid,
+                         inputs.parameters.bodies)
+  {}
+
+
+
+  template <int dim>
+  unsigned int
+  GhostStabilisation<dim>::prepare(const MaterialPoints<dim> &material_points,
+                                   const LoadStepSystem<dim> &,
+                                   const std::vector<bool> &touched)
+  {
+    choose_faces(material_points, touched);
+    return 0;
+  }
+
+
+
+  template <int dim>
+  void
+  GhostStabilisation<dim>::setup(
+    const MaterialPoints<dim> &,
+    const LoadStepSystem<dim> &system,
+    const CouplingRows &,
+    std::vector<std::vector<types::global_dof_index>> &blocks)
+  {
+    for (const FacePenalty &face : face_penalties)
+      {
+        std::vector<types::global_dof_index> indices;
+        for (const unsigned int dof : face.dofs)
+          if (system.system_index(dof) != numbers::invalid_dof_index)
+            indices.push_back(system.system_index(dof));
+        std::sort(indices.begin(), indices.end());
+        blocks.push_back(std::move(indices));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  GhostStabilisation<dim>::add_forces(const LoadStepSystem<dim> &,
+                                      const NodalVector &increment,
+                                      NodalVector       &internal_force)
+  {
+    add_penalty_forces(increment, internal_force);
+  }
+
+
+
+  template <int dim>
+  bool
+  GhostStabilisation<dim>::add_constant_matrix(
+    const LoadStepSystem<dim>      &system,
+    TrilinosWrappers::SparseMatrix &matrix)
+  {
+    add_penalty_matrix(system, matrix);
+    return true;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  GhostStabilisation<dim>::descriptions() const
+  {
+    return {description()};
+  }
+
+
+
   template class GhostStabilisation<2>;
   template class GhostStabilisation<3>;
+
+  IMPM_REGISTER_COUPLING(GhostStabilisation,
+                         "Ghost stabilisation",
+                         inputs.parameters.stabilisation.enabled,
+                         nullptr)
 } // namespace impm

@@ -3,6 +3,7 @@
 // of the bordered matrix, the update, the checkpoint) and each body's
 // displacement for output. The probes and their forces are in
 // rigid_contact.cc.
+#include <impm/base/names.h>
 #include <impm/contact/rigid_contact.h>
 #include <impm/system/load_step_system.h>
 
@@ -163,6 +164,67 @@ namespace impm
 
   // The members defined here, for both dimensions (the class's other
   // members are instantiated in rigid_contact.cc).
+  template <int dim>
+  double
+  RigidContact<dim>::reference_force() const
+  {
+    return body_unknowns.empty() ? 0. : applied_force_norm();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  RigidContact<dim>::n_global_unknowns() const
+  {
+    return body_unknowns.size();
+  }
+
+
+
+  template <int dim>
+  Vector<double>
+  RigidContact<dim>::global_residuals() const
+  {
+    return unknown_residuals();
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::global_coupling(const LoadStepSystem<dim> &system,
+                                     std::vector<NodalVector>  &columns,
+                                     std::vector<NodalVector>  &rows,
+                                     FullMatrix<double>        &corner) const
+  {
+    add_coupling(system, columns, rows, corner);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::add_to_global_unknowns(const Vector<double> &correction)
+  {
+    add_to_unknowns(correction);
+  }
+
+
+
+  template <int dim>
+  std::string
+  RigidContact<dim>::unbalanced_unknown(const unsigned int j) const
+  {
+    return rigid_bodies[body_unknowns[j].body].name +
+           " is pushed by its force in " +
+           Names::axis(body_unknowns[j].component) +
+           " but touches no material there: nothing balances the force "
+           "(place the body on the material)";
+  }
+
+
+
 #define IMPM_INSTANTIATE(dim)                                                  \
   template Vector<double> RigidContact<dim>::unknown_residuals() const;        \
   template double         RigidContact<dim>::applied_force_norm() const;       \
@@ -174,8 +236,20 @@ namespace impm
   template double RigidContact<dim>::max_unknown_increment() const;            \
   template Tensor<1, dim> RigidContact<dim>::displacement_of(                  \
     const unsigned int, const double) const;                                   \
-  template void RigidContact<dim>::save(RunState &) const;                     \
-  template void RigidContact<dim>::load(const RunState &);
+  template void           RigidContact<dim>::save(RunState &) const;           \
+  template void           RigidContact<dim>::load(const RunState &);           \
+  template double         RigidContact<dim>::reference_force() const;          \
+  template unsigned int   RigidContact<dim>::n_global_unknowns() const;        \
+  template Vector<double> RigidContact<dim>::global_residuals() const;         \
+  template void           RigidContact<dim>::global_coupling(                  \
+    const LoadStepSystem<dim> &,                                     \
+    std::vector<NodalVector> &,                                      \
+    std::vector<NodalVector> &,                                      \
+    FullMatrix<double> &) const;                                     \
+  template void RigidContact<dim>::add_to_global_unknowns(                     \
+    const Vector<double> &);                                                   \
+  template std::string RigidContact<dim>::unbalanced_unknown(                  \
+    const unsigned int) const;
   IMPM_INSTANTIATE(2)
   IMPM_INSTANTIATE(3)
 #undef IMPM_INSTANTIATE

@@ -49,17 +49,16 @@ namespace impm
 
     /**
      * The solver parameters the linear solver is made with: 'automatic'
-     * solves with KLU when F-bar's cell pressures are unknowns (GMRES with
-     * the smoothed-aggregation AMG fails on their rows: on the
-     * Mohr-Coulomb footing at h = 0.125 m 61 of 189 GMRES solves failed
-     * and went to KLU, 10 times the run time).
+     * solves with KLU when a coupling needs a direct solver
+     * (Coupling::needs_direct_solver()).
      */
     template <int dim>
     Parameters::Solver
-    linear_solver_parameters(const Parameters::All<dim> &parameters)
+    linear_solver_parameters(const Parameters::All<dim> &parameters,
+                             const Couplings<dim>       &couplings)
     {
       Parameters::Solver solver = parameters.solver;
-      if (parameters.material_points.cell_pressure_unknowns &&
+      if (couplings.need_direct_solver() &&
           solver.linear_solver == Parameters::LinearSolverType::automatic)
         solver.linear_solver = Parameters::LinearSolverType::direct;
       return solver;
@@ -80,6 +79,7 @@ namespace impm
   template <int dim>
   MPMSolver<dim>::MPMSolver(
     const Parameters::All<dim>                    &parameters,
+    ParameterHandler                              &prm,
     std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects,
     const MPI_Comm                                 communicator,
     const RunState                                *resume_state,
@@ -93,53 +93,32 @@ namespace impm
     , root_out(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , grid(parameters.grid, communicator, checkpoint_grid)
+    , couplings(CouplingInputs<dim>{parameters, prm, grid})
     , material_points(parameters.bodies,
                       grid,
                       communicator,
                       acceleration_from_the_start(this->force_effects),
                       resume_state,
-                      RigidContact<dim>::traction_entries(
-                        parameters.rigid_bodies))
-    , ghost_stabilisation(
-        parameters.stabilisation.enabled ?
-          std::make_unique<GhostStabilisation<dim>>(parameters.stabilisation,
-                                                    grid,
-                                                    parameters.bodies) :
-          nullptr)
-    , f_bar(parameters.material_points.f_bar ?
-              std::make_unique<FBar<dim>>(
-                grid,
-                parameters.material_points.cell_pressure_unknowns,
-                parameters.material_points.pressure_jump_stabilisation) :
-              nullptr)
-    , rigid_contact(
-        parameters.rigid_bodies.empty() ?
-          nullptr :
-          std::make_unique<RigidContact<dim>>(parameters.rigid_bodies, grid))
+                      couplings.point_state_entries())
     , system(grid, communicator)
     , assembler(Assembler<dim>::create(parameters.solver.formulation,
                                        material_points,
                                        system,
                                        this->force_effects,
-                                       f_bar.get(),
+                                       couplings.volume_coupling(),
                                        communicator))
-    , linear_solver(LinearSolver::create(linear_solver_parameters(parameters)))
-    , problem(grid,
-              system,
-              *assembler,
-              ghost_stabilisation.get(),
-              rigid_contact.get(),
-              f_bar.get(),
-              *linear_solver,
-              timer)
+    , linear_solver(
+        LinearSolver::create(linear_solver_parameters(parameters, couplings)))
+    , problem(grid, system, *assembler, couplings, *linear_solver, timer)
     , newton_solver(parameters.solver)
     , resume_state(resume_state)
   {
     problem.check_tangents(parameters.testing.check_tangent);
-    if (rigid_contact && resume_state == nullptr)
-      rigid_contact->check_start(material_points);
-    if (rigid_contact && resume_state != nullptr)
-      rigid_contact->load(*resume_state);
+    for (const auto &coupling : couplings.list())
+      if (resume_state == nullptr)
+        coupling->check_start(material_points);
+      else
+        coupling->load(*resume_state);
     if (Utilities::MPI::n_mpi_processes(communicator) > 1)
       grid.connect_cell_weight(
         [this](const typename Triangulation<dim>::cell_iterator &cell,
@@ -270,14 +249,9 @@ namespace impm
                    "hourglass modes have no stiffness and GMRES with AMG "
                    "may not converge; use 2 or more points per cell "
                    "direction or 'Solver/Linear solver = direct'\n";
-    if (parameters.material_points.cell_pressure_unknowns)
-      pcout << "  note: with cell pressure unknowns "
-            << (parameters.solver.linear_solver ==
-                    Parameters::LinearSolverType::gmres_amg ?
-                  "GMRES with AMG may not converge (its AMG does not solve "
-                  "the pressure rows); 'direct' or 'MUMPS' will" :
-                  "the linear solves are direct")
-            << '\n';
+    for (const auto &coupling : couplings.list())
+      for (const std::string &note : coupling->notes(parameters.solver))
+        pcout << "  note: " << note << '\n';
     pcout << "  effects:\n";
     for (const auto &effect : effect_descriptions)
       pcout << "    " << effect << '\n';
@@ -297,7 +271,7 @@ namespace impm
                       !force_effects.empty(),
                       timer,
                       communicator,
-                      rigid_contact.get()});
+                      couplings});
     if (resume_state)
       postprocessors->resume(*resume_state);
     else
@@ -339,8 +313,8 @@ namespace impm
                 Utilities::MPI::n_mpi_processes(communicator)));
     control.save(state);
     material_points.save(state);
-    if (rigid_contact)
-      rigid_contact->save(state);
+    for (const auto &coupling : couplings.list())
+      coupling->save(state);
     postprocessors->save(state, elapsed);
     Checkpoint(parameters.scene.output_directory, communicator)
       .write(
@@ -363,12 +337,8 @@ namespace impm
       list.push_back(effect->description());
     for (const auto &face : grid.face_descriptions())
       list.push_back(face);
-    if (ghost_stabilisation)
-      list.push_back(ghost_stabilisation->description());
-    if (f_bar)
-      list.push_back(f_bar->description());
-    if (rigid_contact)
-      for (const auto &line : rigid_contact->descriptions())
+    for (const auto &coupling : couplings.list())
+      for (const auto &line : coupling->descriptions())
         list.push_back(line);
     if (parameters.material_points.basis == BasisType::gimp &&
         parameters.material_points.update_domains)
@@ -387,8 +357,7 @@ namespace impm
       system.evaluate_basis(material_points, parameters.material_points.basis);
     }
     TimerOutput::Scope scope(timer, "system setup");
-    const bool         same_system =
-      system.setup(material_points, ghost_stabilisation.get(), f_bar.get());
+    const bool same_system = couplings.set_up_system(material_points, system);
     // A kept matrix has the rows of the step before, and so its rigid-body
     // modes: the linear solver may keep what it built for it (an AMG
     // hierarchy, under its reuse rule).
@@ -407,16 +376,11 @@ namespace impm
     record.start       = control.start();
     record.target      = control.target();
     record.system_dofs = system.n_dofs();
-    if (rigid_contact)
-      rigid_contact->begin(material_points,
-                           system,
-                           record.start,
-                           record.target);
-    problem.begin(record.start, record.target);
-    record.newton             = newton_solver.solve(problem);
-    record.tangent_difference = problem.take_tangent_difference();
-    record.tangent_columns_across_kinks =
-      problem.take_tangent_columns_across_kinks();
+    problem.begin(material_points, record.start, record.target);
+    record.newton                       = newton_solver.solve(problem);
+    const TangentCheckResult check      = problem.take_tangent_check();
+    record.tangent_difference           = check.largest_row_difference;
+    record.tangent_columns_across_kinks = check.columns_across_kinks;
     if (record.converged())
       record.point_increment = problem.max_point_increment();
     record.newton.outcome =
@@ -432,14 +396,9 @@ namespace impm
   void
   MPMSolver<dim>::accept_load_step(StepRecord &record)
   {
-    Tensor<1, dim> rigid_body_force;
-    if (rigid_contact)
-      {
-        rigid_contact->accept(material_points);
-        for (const auto &force : rigid_contact->body_forces())
-          rigid_body_force += force.total;
-      }
-    const auto reactions      = problem.reactions(rigid_body_force);
+    for (const auto &coupling : couplings.list())
+      coupling->accept(material_points);
+    const auto reactions      = problem.reactions();
     record.reactions          = reactions.by_column;
     record.reaction_imbalance = reactions.imbalance;
     TimerOutput::Scope scope(timer, "point update");
@@ -513,6 +472,7 @@ namespace impm
     if (!options.resume)
       {
         MPMSolver<dim> solver(parameters,
+                              prm,
                               EffectRegistry::create_enabled<dim>(prm),
                               communicator);
         solver.run();
@@ -528,6 +488,7 @@ namespace impm
                        state.get_string("scene.name") + "', not '" +
                        parameters.scene.name + "'.");
     MPMSolver<dim> solver(parameters,
+                          prm,
                           EffectRegistry::create_enabled<dim>(prm),
                           communicator,
                           &state,

@@ -2,6 +2,7 @@
 
 #include <impm/base/names.h>
 #include <impm/contact/rigid_body.h>
+#include <impm/contact/rigid_contact.h>
 #include <impm/io/atomic_file.h>
 #include <impm/io/point_output.h>
 #include <impm/postprocess/postprocessor.h>
@@ -53,11 +54,12 @@ namespace impm
           add("rank", false);
         if (body)
           add("body", false);
-        if (context.rigid_contact != nullptr)
+        if (context.couplings.template find<RigidContact<dim>>() != nullptr)
           output.other_parts =
             [this,
              directory = context.parameters.scene.output_directory,
-             contact   = context.rigid_contact](const std::string &suffix) {
+             contact   = context.couplings.template find<RigidContact<dim>>()](
+              const std::string &suffix) {
               return write_rigid_bodies(directory, *contact, suffix);
             };
       }

@@ -23,7 +23,7 @@ namespace impm
     public:
       /** @brief Constructor. */
       explicit RigidBodyForces(const RunContext<dim> &context)
-        : bodies(context.rigid_contact->bodies())
+        : bodies(context.couplings.template find<RigidContact<dim>>()->bodies())
         , n_bodies(bodies.size())
       {}
 
@@ -49,7 +49,8 @@ namespace impm
       void
       measure_step(const RunContext<dim> &context, StepRecord &record) override
       {
-        const auto &forces = context.rigid_contact->body_forces();
+        const auto &forces =
+          context.couplings.template find<RigidContact<dim>>()->body_forces();
         for (unsigned int k = 0; k < n_bodies; ++k)
           {
             const std::string prefix = "rigid_" + std::to_string(k + 1) + '_';
@@ -72,7 +73,8 @@ namespace impm
                label + "s",
                static_cast<double>(forces[k].n_slipping)});
             const Tensor<1, dim> displacement =
-              context.rigid_contact->displacement_of(k, record.target);
+              context.couplings.template find<RigidContact<dim>>()
+                ->displacement_of(k, record.target);
             for (const unsigned int d : bodies[k].force_components)
               record.measures.push_back(
                 {prefix + "displacement_" + Names::axis(d),
@@ -87,7 +89,8 @@ namespace impm
     };
   } // namespace
 
-  IMPM_REGISTER_POSTPROCESSOR(RigidBodyForces,
-                              "rigid body forces",
-                              context.rigid_contact != nullptr)
+  IMPM_REGISTER_POSTPROCESSOR(
+    RigidBodyForces,
+    "rigid body forces",
+    context.couplings.template find<RigidContact<dim>>() != nullptr)
 } // namespace impm

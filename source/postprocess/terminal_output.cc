@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <impm/base/names.h>
+#include <impm/contact/rigid_contact.h>
 #include <impm/postprocess/column_solution.h>
 #include <impm/postprocess/postprocessor.h>
 
@@ -159,7 +160,8 @@ namespace impm
       const double minimum_order = parameters.testing.minimum_newton_order;
       std::cout << "observed Newton order near the solution >= "
                 << minimum_order << " in every step"
-                << (context.rigid_contact != nullptr ?
+                << (context.couplings.template find<RigidContact<dim>>() !=
+                        nullptr ?
                       " (pairs of iterates between which a contact changed "
                       "state not counted)" :
                       "")
@@ -206,7 +208,8 @@ namespace impm
                     context.material_points.initial_mass());
       std::cout << buffer;
       const auto &reaction_columns = context.grid.reaction_columns();
-      if ((!reaction_columns.empty() || context.rigid_contact != nullptr) &&
+      if ((!reaction_columns.empty() ||
+           context.couplings.template find<RigidContact<dim>>() != nullptr) &&
           context.has_force_effects)
         std::cout << "reactions balance the load to 1e-8 in every step: "
                   << (statistics.max_reaction_imbalance < 1e-8 ? "yes" : "NO")
@@ -268,13 +271,21 @@ namespace impm
                         statistics.last_reactions[c] / force);
           std::cout << buffer;
         }
-      if (context.rigid_contact != nullptr)
-        for (unsigned int k = 0; k < context.rigid_contact->bodies().size();
+      if (context.couplings.template find<RigidContact<dim>>() != nullptr)
+        for (unsigned int k = 0;
+             k < context.couplings.template find<RigidContact<dim>>()
+                   ->bodies()
+                   .size();
              ++k)
           {
-            const auto &body_force = context.rigid_contact->body_forces()[k];
+            const auto &body_force =
+              context.couplings.template find<RigidContact<dim>>()
+                ->body_forces()[k];
             std::cout << "final force on "
-                      << context.rigid_contact->bodies()[k].name << ":";
+                      << context.couplings.template find<RigidContact<dim>>()
+                           ->bodies()[k]
+                           .name
+                      << ":";
             for (unsigned int d = 0; d < dim; ++d)
               {
                 std::snprintf(buffer,
@@ -293,7 +304,8 @@ namespace impm
                           body_force.n_contacts,
                           body_force.n_slipping);
             std::cout << buffer;
-            const auto &body = context.rigid_contact->bodies()[k];
+            const auto &body =
+              context.couplings.template find<RigidContact<dim>>()->bodies()[k];
             if (body.force_components.empty())
               continue;
             std::cout << "final displacement of " << body.name
@@ -304,7 +316,9 @@ namespace impm
                               sizeof(buffer),
                               " %s %.6f",
                               Names::axes[d],
-                              context.rigid_contact->pushed_displacement(k)[d] /
+                              context.couplings
+                                  .template find<RigidContact<dim>>()
+                                  ->pushed_displacement(k)[d] /
                                 length);
                 std::cout << buffer;
               }

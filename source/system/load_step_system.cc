@@ -2,8 +2,6 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <impm/assembly/f_bar.h>
-#include <impm/assembly/ghost_stabilisation.h>
 #include <impm/system/load_step_system.h>
 
 #include <algorithm>
@@ -75,10 +73,8 @@ namespace impm
 
 
   template <int dim>
-  bool
-  LoadStepSystem<dim>::setup(const MaterialPoints<dim> &material_points,
-                             GhostStabilisation<dim>   *ghost_stabilisation,
-                             FBar<dim>                 *f_bar)
+  std::vector<bool>
+  LoadStepSystem<dim>::touched_dofs() const
   {
     // Mark every DoF a point touches, and tell the owners.
     NodalVector marker;
@@ -92,8 +88,16 @@ namespace impm
     std::vector<bool>  touched(n_local);
     for (unsigned int i = 0; i < n_local; ++i)
       touched[i] = marker.local_element(i) > 0.;
-    marker.zero_out_ghost_values();
+    return touched;
+  }
 
+
+
+  template <int dim>
+  void
+  LoadStepSystem<dim>::number(const std::vector<bool>      &touched,
+                              const types::global_dof_index n_coupling_rows)
+  {
     // Owned DoFs in the system: touched and not constrained, numbered
     // contiguously per process.
     const unsigned int      n_owned = grid.n_locally_owned_dofs();
@@ -106,29 +110,30 @@ namespace impm
                           grid.locally_owned_dofs().nth_index_in_set(i));
         n_local_system += in_system[i];
       }
-    // With F-bar's cell pressure unknowns, this process's patches
-    // follow its nodal rows.
+    // The couplings' rows of unknowns follow this process's nodal rows.
     n_nodal_rows = n_local_system;
-    if (f_bar != nullptr)
-      n_local_system += f_bar->make_patches(material_points);
-    types::global_dof_index offset = 0;
+    n_local_system += n_coupling_rows;
+    first_row = 0;
     MPI_Exscan(&n_local_system,
-               &offset,
+               &first_row,
                1,
                Utilities::MPI::mpi_type_id_for_type<types::global_dof_index>,
                MPI_SUM,
                communicator);
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      offset = 0;
+      first_row = 0;
     const types::global_dof_index n_system =
       Utilities::MPI::sum(n_local_system, communicator);
 
+    NodalVector marker;
+    grid.reinit_vector(marker);
     marker                       = -1.;
-    types::global_dof_index next = offset;
+    types::global_dof_index next = first_row;
     for (unsigned int i = 0; i < n_owned; ++i)
       if (in_system[i])
         marker.local_element(i) = static_cast<double>(next++);
     marker.update_ghost_values();
+    const unsigned int n_local = grid.n_local_dofs();
     index_in_system.resize(n_local);
     for (unsigned int i = 0; i < n_local; ++i)
       index_in_system[i] =
@@ -138,36 +143,21 @@ namespace impm
 
     owned.clear();
     owned.set_size(n_system);
-    owned.add_range(offset, offset + n_local_system);
+    owned.add_range(first_row, first_row + n_local_system);
     assembly_groups =
       make_assembly_groups(point_steps, index_in_system, grid.cartesian());
+  }
 
-    if (ghost_stabilisation != nullptr)
-      ghost_stabilisation->setup(material_points, touched);
-    const auto face_indices = [&](const std::vector<unsigned int> &dofs) {
-      std::vector<types::global_dof_index> indices;
-      for (const unsigned int dof : dofs)
-        if (index_in_system[dof] != numbers::invalid_dof_index)
-          indices.push_back(index_in_system[dof]);
-      std::sort(indices.begin(), indices.end());
-      return indices;
-    };
 
-    // The sparsity pattern comes from the points' supports, the stabilised
-    // faces and the F-bar patches (every DoF of a patch couples to every
-    // other). When it is made of the same row sets as the matrix's on every
-    // process, the matrix is kept (it is zeroed before each assembly).
-    std::vector<std::vector<types::global_dof_index>> blocks;
-    if (ghost_stabilisation != nullptr)
-      for (const auto &face : ghost_stabilisation->faces())
-        blocks.push_back(face_indices(face.dofs));
-    if (f_bar != nullptr)
-      {
-        f_bar->setup(
-          material_points, *this, n_local, offset + n_nodal_rows, owned);
-        for (auto &rows : f_bar->patch_rows())
-          blocks.push_back(std::move(rows));
-      }
+
+  template <int dim>
+  bool
+  LoadStepSystem<dim>::make_pattern(
+    const std::vector<std::vector<types::global_dof_index>> &blocks)
+  {
+    const types::global_dof_index offset         = first_row;
+    const types::global_dof_index n_local_system = owned.n_elements();
+    const types::global_dof_index n_system       = owned.size();
     // The constant part's faces (and, with a new pattern, its addresses)
     // may have changed.
     constant_part.clear();

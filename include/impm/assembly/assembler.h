@@ -5,9 +5,9 @@
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
-#include <impm/assembly/f_bar.h>
 #include <impm/core/effects.h>
 #include <impm/core/parameters.h>
+#include <impm/coupling/coupling.h>
 #include <impm/points/material_points.h>
 #include <impm/system/load_step_system.h>
 
@@ -27,12 +27,17 @@ namespace impm
    * The statement (the per-point integrands of
    * mechanics/equilibrium_forms.h) is chosen once, when the assembler is
    * created: each is its own implementation of the two virtual functions,
-   * with no test of the formulation inside the loops.
+   * with no test of the formulation inside the loops. A coupling that sets
+   * the points' volumes (Coupling::sets_point_volumes(), F-bar) takes over
+   * the stress update and changes each point's tangent; the other
+   * couplings add their own terms beside the points' (LoadStepProblem).
+   * As PointGradients it gives the couplings the gradients it assembles
+   * with.
    *
    * @tparam dim Space dimension.
    */
   template <int dim>
-  class Assembler
+  class Assembler : public PointGradients<dim>
   {
   public:
     /**
@@ -41,7 +46,8 @@ namespace impm
      * @param material_points The points.
      * @param system The load step's system (its point steps are updated).
      * @param force_effects The scene's loads.
-     * @param f_bar The F-bar treatment, or nullptr (none).
+     * @param volume_coupling The coupling that sets the points' volumes
+     *   (Couplings::volume_coupling()), or nullptr (none).
      * @param communicator The processes of the run.
      */
     static std::unique_ptr<Assembler<dim>>
@@ -49,16 +55,16 @@ namespace impm
            const MaterialPoints<dim>    &material_points,
            LoadStepSystem<dim>          &system,
            const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
-           FBar<dim>                                            *f_bar,
-           const MPI_Comm                                        communicator);
+           Coupling<dim> *volume_coupling,
+           const MPI_Comm communicator);
 
     /** @brief Destructor. */
-    virtual ~Assembler() = default;
+    virtual ~Assembler() override = default;
 
     /**
      * @brief The stress update: each point's deformation gradient increment
-     * from @p increment (with F-bar, scaled to its patch's mean volume
-     * change) and its material's return map. Returns false on
+     * from @p increment and its material's return map (with a coupling that
+     * sets the points' volumes, through it). Returns false on
      * every process if any point's increment is inverted or not finite.
      * Collective.
      */
@@ -94,7 +100,7 @@ namespace impm
       const MaterialPoints<dim>                            &material_points,
       LoadStepSystem<dim>                                  &system,
       const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects,
-      FBar<dim>                                            *f_bar,
+      Coupling<dim>                                        *volume_coupling,
       const MPI_Comm                                        communicator);
 
     /** The points. */
@@ -103,8 +109,8 @@ namespace impm
     LoadStepSystem<dim> &system;
     /** The loads. */
     const std::vector<std::unique_ptr<ForceEffect<dim>>> &force_effects;
-    /** The F-bar treatment, or nullptr. */
-    FBar<dim> *f_bar;
+    /** The coupling that sets the points' volumes, or nullptr. */
+    Coupling<dim> *volume_coupling;
     /** The processes. */
     const MPI_Comm communicator;
   };

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <impm/assembly/dense_block_adder.h>
+#include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
 #include <impm/system/point_step.h>
@@ -21,9 +22,6 @@
 namespace impm
 {
   using namespace dealii;
-
-  template <int dim>
-  class LoadStepSystem;
 
   /**
    * @brief The F-bar treatment of volumetric locking for material points
@@ -86,9 +84,79 @@ namespace impm
    * @tparam dim Space dimension.
    */
   template <int dim>
-  class FBar
+  class FBar : public Coupling<dim>
   {
   public:
+    /** @brief The coupling of a scene (Material points/F-bar). */
+    explicit FBar(const CouplingInputs<dim> &inputs);
+
+    /** @brief make_patches(): the pressure unknowns' rows. */
+    unsigned int
+    prepare(const MaterialPoints<dim> &material_points,
+            const LoadStepSystem<dim> &system,
+            const std::vector<bool>   &touched) override;
+
+    /** @brief set_up_patches() from @p rows.first, and patch_rows(). */
+    void
+    setup(const MaterialPoints<dim>                         &material_points,
+          const LoadStepSystem<dim>                         &system,
+          const CouplingRows                                &rows,
+          std::vector<std::vector<types::global_dof_index>> &blocks) override;
+
+    /** @brief reset_pressure_unknowns() (with pressure unknowns). */
+    void
+    begin_attempt(const MaterialPoints<dim> &material_points,
+                  const LoadStepSystem<dim> &system,
+                  const double               start,
+                  const double               target) override;
+
+    /** @brief True: F-bar sets the points' volume changes. */
+    bool
+    sets_point_volumes() const override;
+
+    /** @brief With pressure unknowns equalise_pressures(), else average()
+     *  and every point's return map. */
+    bool
+    update_stresses(
+      std::vector<PointStep<dim>>             &point_steps,
+      const std::function<bool(unsigned int)> &update_point) override;
+
+    /** @brief add_patch_stiffness(). */
+    bool
+    add_matrix(const PointGradients<dim>      &gradients,
+               const LoadStepSystem<dim>      &system,
+               TrilinosWrappers::SparseMatrix &matrix) override;
+
+    /** @brief pressure_residuals() (with pressure unknowns). */
+    void
+    add_row_residuals(std::vector<std::pair<types::global_dof_index, double>>
+                        &residuals) override;
+
+    /** @brief add_to_pressure_unknowns() (with pressure unknowns). */
+    void
+    add_solution(const TrilinosWrappers::MPI::Vector &solution) override;
+
+    /** @brief perturb_pressure_unknown() (with pressure unknowns). */
+    double
+    perturb_row(const types::global_dof_index row,
+                const double                  amount) override;
+
+    /** @brief With pressure unknowns: a direct solver (GMRES with the
+     *  smoothed-aggregation AMG fails on their rows: on the Mohr-Coulomb
+     *  footing at h = 0.125 m 61 of 189 GMRES solves failed and went to
+     *  KLU, 10 times the run time). */
+    bool
+    needs_direct_solver() const override;
+
+    /** @brief With pressure unknowns, what the linear solver does with
+     *  them. */
+    std::vector<std::string>
+    notes(const Parameters::Solver &solver) const override;
+
+    /** @brief description(). */
+    std::vector<std::string>
+    descriptions() const override;
+
     /**
      * @brief Constructor.
      * @param grid The background grid (cells and their neighbours).
@@ -115,7 +183,7 @@ namespace impm
      * @brief Group this step's points into patches (body and cell at the
      * start of the step). Returns the number of pressure unknowns this
      * process owns: one per patch with has_pressure_unknowns(), else none.
-     * Called by LoadStepSystem::setup() before it numbers the system.
+     * Called by prepare(), before the system is numbered.
      */
     unsigned int
     make_patches(const MaterialPoints<dim> &material_points);
@@ -126,15 +194,15 @@ namespace impm
      * pressure unknowns, number them from @p first_pressure_index (this
      * process's, after its nodal rows), start them at the patches' mean
      * stresses and find each patch's neighbours (on other processes too).
-     * Called by LoadStepSystem::setup() once the system's DoFs are
-     * numbered. Collective.
+     * Called by setup(), once the system's DoFs are numbered.
+     * Collective.
      */
     void
-    setup(const MaterialPoints<dim>    &material_points,
-          const LoadStepSystem<dim>    &system,
-          const unsigned int            n_local_dofs,
-          const types::global_dof_index first_pressure_index,
-          const IndexSet               &owned_rows);
+    set_up_patches(const MaterialPoints<dim>    &material_points,
+                   const LoadStepSystem<dim>    &system,
+                   const unsigned int            n_local_dofs,
+                   const types::global_dof_index first_pressure_index,
+                   const IndexSet               &owned_rows);
 
     /**
      * @brief The system indices of each patch's blocks (ascending), for
@@ -218,7 +286,7 @@ namespace impm
     point_tangent(const unsigned int    p,
                   const Tensor<4, dim> &tangent,
                   const Tensor<2, dim> &force_stress,
-                  const Tensor<2, dim> &gradient_map);
+                  const Tensor<2, dim> &gradient_map) override;
 
     /**
      * @brief Add every patch's coupling block to @p matrix.

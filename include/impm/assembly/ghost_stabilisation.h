@@ -6,17 +6,16 @@
 
 #include <impm/assembly/dense_block_adder.h>
 #include <impm/core/parameters.h>
+#include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
 
+#include <string>
 #include <vector>
 
 namespace impm
 {
   using namespace dealii;
-
-  template <int dim>
-  class LoadStepSystem;
 
   /**
    * @brief Ghost stabilisation: a penalty on the jump of the normal
@@ -27,13 +26,14 @@ namespace impm
    *
    * The faces and their penalty matrices are chosen once per load step;
    * the penalty acts on the displacement increment, so a converged step is
-   * in equilibrium with it. A scene that switches it off creates none of
-   * this.
+   * in equilibrium with it. A coupling (the penalty's matrix is the
+   * constant part of the load step's matrix); a scene that switches it off
+   * creates none of this.
    *
    * @tparam dim Space dimension.
    */
   template <int dim>
-  class GhostStabilisation
+  class GhostStabilisation : public Coupling<dim>
   {
   public:
     /** @brief A face penalty, fixed during a load step. */
@@ -58,6 +58,38 @@ namespace impm
                        const BackgroundGrid<dim>       &grid,
                        const std::vector<Body<dim>>    &bodies);
 
+    /** @brief The coupling of a scene (Ghost stabilisation/Enabled). */
+    explicit GhostStabilisation(const CouplingInputs<dim> &inputs);
+
+    /** @brief Choose the step's faces (choose_faces()); adds no rows. */
+    unsigned int
+    prepare(const MaterialPoints<dim> &material_points,
+            const LoadStepSystem<dim> &system,
+            const std::vector<bool>   &touched) override;
+
+    /** @brief The faces' DoFs in the system as dense blocks. */
+    void
+    setup(const MaterialPoints<dim>                         &material_points,
+          const LoadStepSystem<dim>                         &system,
+          const CouplingRows                                &rows,
+          std::vector<std::vector<types::global_dof_index>> &blocks) override;
+
+    /** @brief The penalty forces (add_penalty_forces()). */
+    void
+    add_forces(const LoadStepSystem<dim> &system,
+               const NodalVector         &increment,
+               NodalVector               &internal_force) override;
+
+    /** @brief The penalty matrices (add_penalty_matrix()): constant over
+     *  the step. */
+    bool
+    add_constant_matrix(const LoadStepSystem<dim>      &system,
+                        TrilinosWrappers::SparseMatrix &matrix) override;
+
+    /** @brief description(). */
+    std::vector<std::string>
+    descriptions() const override;
+
     /**
      * @brief Choose this step's faces: between two locally owned or ghost
      * cells whose DoFs are all touched by material, where either cell is
@@ -66,8 +98,8 @@ namespace impm
      * @param touched For each local DoF, whether a point's support has it.
      */
     void
-    setup(const MaterialPoints<dim> &material_points,
-          const std::vector<bool>   &touched);
+    choose_faces(const MaterialPoints<dim> &material_points,
+                 const std::vector<bool>   &touched);
 
     /** @brief This step's face penalties. */
     const std::vector<FacePenalty> &
@@ -81,15 +113,16 @@ namespace impm
      * (before its compress()).
      */
     void
-    add_forces(const NodalVector &increment, NodalVector &internal_force) const;
+    add_penalty_forces(const NodalVector &increment,
+                       NodalVector       &internal_force) const;
 
     /**
      * @brief Add the penalty matrices to the system matrix (before its
      * compress()).
      */
     void
-    add_matrix(const LoadStepSystem<dim>      &system,
-               TrilinosWrappers::SparseMatrix &matrix) const;
+    add_penalty_matrix(const LoadStepSystem<dim>      &system,
+                       TrilinosWrappers::SparseMatrix &matrix) const;
 
     /** @brief A one-line description for the start-up report. */
     std::string

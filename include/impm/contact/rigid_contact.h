@@ -9,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <impm/contact/rigid_body.h>
+#include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
@@ -20,9 +21,6 @@
 namespace impm
 {
   using namespace dealii;
-
-  template <int dim>
-  class LoadStepSystem;
 
   /**
    * @brief Contact between the material points and the scene's rigid
@@ -49,8 +47,8 @@ namespace impm
    * the material's contact force on the body, and since every probe's
    * force depends on the face's position minus the body's displacement,
    * the derivatives with respect to the body follow from those with
-   * respect to the face (add_coupling()). LoadStepProblem solves the
-   * bordered system.
+   * respect to the face (add_coupling()): they are the coupling's global
+   * unknowns, which LoadStepProblem eliminates with the other couplings'.
    *
    * A converged step stores each face's friction traction in the point
    * (PointLayout::contact_traction, only in scenes with friction) and sums
@@ -60,9 +58,61 @@ namespace impm
    * @tparam dim Space dimension.
    */
   template <int dim>
-  class RigidContact
+  class RigidContact : public Coupling<dim>
   {
   public:
+    /** @brief The coupling of a scene with rigid bodies. */
+    explicit RigidContact(const CouplingInputs<dim> &inputs);
+
+    /** @brief The friction tractions' entries (traction_entries()). */
+    unsigned int
+    point_state_entries() const override;
+
+    /** @brief begin(). */
+    void
+    begin_attempt(const MaterialPoints<dim> &material_points,
+                  const LoadStepSystem<dim> &system,
+                  const double               start,
+                  const double               target) override;
+
+    /** @brief add_contact_matrix(); through the matrix's add(). */
+    bool
+    add_matrix(const PointGradients<dim>      &gradients,
+               const LoadStepSystem<dim>      &system,
+               TrilinosWrappers::SparseMatrix &matrix) override;
+
+    /** @brief applied_force_norm() with unknowns, else 0. */
+    double
+    reference_force() const override;
+
+    /** @brief The size of unknowns(). */
+    unsigned int
+    n_global_unknowns() const override;
+
+    /** @brief unknown_residuals(). */
+    Vector<double>
+    global_residuals() const override;
+
+    /** @brief add_coupling(). */
+    void
+    global_coupling(const LoadStepSystem<dim> &system,
+                    std::vector<NodalVector>  &columns,
+                    std::vector<NodalVector>  &rows,
+                    FullMatrix<double>        &corner) const override;
+
+    /** @brief add_to_unknowns(). */
+    void
+    add_to_global_unknowns(const Vector<double> &correction) override;
+
+    /** @brief The body that no material holds in a force-driven
+     *  component. */
+    std::string
+    unbalanced_unknown(const unsigned int j) const override;
+
+    /** @brief The sum of body_forces(). */
+    Tensor<1, dim>
+    force_from_material() const override;
+
     /**
      * @brief The entries of the friction tractions per point: dim per
      * probe of each face for each body with friction (0 without
@@ -98,7 +148,7 @@ namespace impm
      * body: one line naming the rigid body and a point. Collective.
      */
     void
-    check_start(const MaterialPoints<dim> &material_points) const;
+    check_start(const MaterialPoints<dim> &material_points) const override;
 
     /**
      * @brief Start an attempt from load factor @p start to @p target: the
@@ -122,7 +172,7 @@ namespace impm
     void
     add_forces(const LoadStepSystem<dim> &system,
                const NodalVector         &increment,
-               NodalVector               &internal_force);
+               NodalVector               &internal_force) override;
 
     /** @brief An unknown of the bodies: a force-driven component. */
     struct Unknown
@@ -184,7 +234,7 @@ namespace impm
      * of its direction (0 without unknowns).
      */
     double
-    max_unknown_increment() const;
+    max_unknown_increment() const override;
 
     /**
      * @brief The displacement of body @p k at load factor @p load_factor
@@ -205,12 +255,12 @@ namespace impm
     /** @brief Store the accepted unknowns in @p state (scenes with
      *  unknowns). */
     void
-    save(RunState &state) const;
+    save(RunState &state) const override;
 
     /** @brief Read the accepted unknowns from @p state (scenes with
      *  unknowns). */
     void
-    load(const RunState &state);
+    load(const RunState &state) override;
 
     /**
      * @brief Whether, on any process, a probe changed its state (into or
@@ -218,15 +268,15 @@ namespace impm
      * one before in the same attempt. Collective.
      */
     bool
-    state_changed() const;
+    state_changed() const override;
 
     /**
      * @brief Add the derivative of the forces of the last add_forces() to
      * the system matrix (before its compress()).
      */
     void
-    add_matrix(const LoadStepSystem<dim>      &system,
-               TrilinosWrappers::SparseMatrix &matrix) const;
+    add_contact_matrix(const LoadStepSystem<dim>      &system,
+                       TrilinosWrappers::SparseMatrix &matrix) const;
 
     /**
      * @brief After a converged step: store each face's friction traction
@@ -234,7 +284,7 @@ namespace impm
      * Collective.
      */
     void
-    accept(MaterialPoints<dim> &material_points);
+    accept(MaterialPoints<dim> &material_points) override;
 
     /** @brief The force of the material on a body, in parts. */
     struct BodyForce
@@ -267,7 +317,7 @@ namespace impm
 
     /** @brief One line per rigid body for the start-up report. */
     std::vector<std::string>
-    descriptions() const;
+    descriptions() const override;
 
   private:
     /**

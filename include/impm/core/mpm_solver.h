@@ -3,13 +3,13 @@
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
 #include <impm/assembly/assembler.h>
-#include <impm/assembly/ghost_stabilisation.h>
-#include <impm/contact/rigid_contact.h>
 #include <impm/core/effects.h>
 #include <impm/core/parameters.h>
+#include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
@@ -37,7 +37,8 @@ namespace impm
    * the DoFs that points touch (LoadStepSystem), full Newton with the
    * consistent tangent (NewtonSolver on a LoadStepProblem), the step
    * control's verdict (LoadStepControl), the convection of the points
-   * (MaterialPoints), and the postprocessors (PostprocessorManager). See
+   * (MaterialPoints), the scene's couplings (Couplings: it names none of
+   * them) and the postprocessors (PostprocessorManager). See
    * doc/architecture.md.
    *
    * @tparam dim Space dimension.
@@ -49,6 +50,8 @@ namespace impm
     /**
      * @brief Set up the grid, the points and the solvers of a scene.
      * @param parameters The scene (with its bodies and their materials).
+     * @param prm The scene's parameter file (the couplings read their
+     *   subsections).
      * @param force_effects The loads the scene enables.
      * @param communicator The processes that share the work.
      * @param resume_state If not null, the state of the checkpoint to
@@ -56,6 +59,7 @@ namespace impm
      * @param checkpoint_grid The checkpoint's grid file.
      */
     MPMSolver(const Parameters::All<dim>                    &parameters,
+              ParameterHandler                              &prm,
               std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects,
               const MPI_Comm                                 communicator,
               const RunState    *resume_state    = nullptr,
@@ -74,7 +78,7 @@ namespace impm
     void
     start_run();
 
-    /** One line per effect, grid face condition and stabilisation. */
+    /** One line per effect, grid face condition and coupling. */
     std::vector<std::string>
     describe_effects() const;
 
@@ -116,13 +120,10 @@ namespace impm
     ConditionalOStream root_out;
     TimerOutput        timer;
 
-    BackgroundGrid<dim>                      grid;
-    MaterialPoints<dim>                      material_points;
-    std::unique_ptr<GhostStabilisation<dim>> ghost_stabilisation;
-    /** The F-bar treatment, if the scene asks for it. */
-    std::unique_ptr<FBar<dim>> f_bar;
-    /** The contact with the rigid bodies, if the scene has any. */
-    std::unique_ptr<RigidContact<dim>>         rigid_contact;
+    BackgroundGrid<dim> grid;
+    /** The couplings the scene asks for. */
+    Couplings<dim>                             couplings;
+    MaterialPoints<dim>                        material_points;
     LoadStepSystem<dim>                        system;
     std::unique_ptr<Assembler<dim>>            assembler;
     std::unique_ptr<LinearSolver>              linear_solver;

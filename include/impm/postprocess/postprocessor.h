@@ -5,8 +5,8 @@
 #include <deal.II/base/timer.h>
 
 #include <impm/base/plugin_list.h>
-#include <impm/contact/rigid_contact.h>
 #include <impm/core/parameters.h>
+#include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
@@ -52,23 +52,13 @@ namespace impm
     TimerOutput &timer;
     /** The processes of the run. */
     const MPI_Comm communicator;
-    /** The contact with the rigid bodies (nullptr: none). */
-    const RigidContact<dim> *rigid_contact = nullptr;
+    /** The scene's couplings (Couplings::find() finds one by type). */
+    const Couplings<dim> &couplings;
     /** The columns of StepMeasure values (set by the PostprocessorManager
      *  from all postprocessors' step_measure_columns()). */
     std::vector<std::string> step_measure_columns = {};
   };
 
-  /** @brief A value measured after a converged load step. */
-  struct StepMeasure
-  {
-    /** Its column in steps.csv and key in summary.json. */
-    std::string column;
-    /** Its word in the progress log. */
-    std::string label;
-    /** The value. */
-    double value;
-  };
 
   /** @brief One attempt at a load step. */
   struct StepRecord

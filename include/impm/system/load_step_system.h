@@ -22,11 +22,6 @@ namespace impm
 {
   using namespace dealii;
 
-  template <int dim>
-  class GhostStabilisation;
-  template <int dim>
-  class FBar;
-
   /**
    * @brief The linear system of one load step: the basis of every point on
    * the start-of-step grid (evaluated once per step), the compact numbering
@@ -76,16 +71,47 @@ namespace impm
       std::array<double, PointSupport<dim>::max_nodes> &weights) const;
 
     /**
-     * @brief Number the system's DoFs, group the points, let the ghost
-     * stabilisation (if any) choose its faces and F-bar (if any) its
-     * patches, and make the sparsity pattern, matrix and vectors.
-     * Returns whether the matrix of the step before was kept (the same
-     * rows and pattern on every process: the same system). Collective.
+     * @brief Which local DoFs (owned and ghost) the points of this step
+     * touch, on every process that has them. Collective.
+     */
+    std::vector<bool>
+    touched_dofs() const;
+
+    /**
+     * @brief Number the system: the owned DoFs in @p touched that no face
+     * condition holds, then @p n_coupling_rows rows of the couplings'
+     * unknowns (Coupling::prepare()), contiguously per process; and group
+     * the points by support. Collective.
+     */
+    void
+    number(const std::vector<bool>      &touched,
+           const types::global_dof_index n_coupling_rows);
+
+    /** @brief The first row of this process's couplings' unknowns (after
+     *  its nodal rows). */
+    types::global_dof_index
+    first_coupling_row() const
+    {
+      return first_row + n_nodal_rows;
+    }
+
+    /** @brief The rows this process owns. */
+    const IndexSet &
+    owned_rows() const
+    {
+      return owned;
+    }
+
+    /**
+     * @brief Make the sparsity pattern, matrix and vectors from the points'
+     * supports and the further dense blocks @p blocks (the couplings'), or
+     * keep the matrix of the step before when it has the same rows and
+     * pattern on every process (the same system): returns whether it was
+     * kept. Collective.
      */
     bool
-    setup(const MaterialPoints<dim> &material_points,
-          GhostStabilisation<dim>   *ghost_stabilisation,
-          FBar<dim>                 *f_bar);
+    make_pattern(
+      const std::vector<std::vector<types::global_dof_index>> &blocks);
 
     /** @brief The per-point data of this step, in iteration order. */
     std::vector<PointStep<dim>> point_steps;
@@ -129,7 +155,7 @@ namespace impm
     /**
      * @brief Set the right-hand side to @p external - @p internal on the
      * system's DoFs and to minus the residuals @p further_rows on further
-     * rows this process owns (F-bar's cell pressures); returns its norm.
+     * rows this process owns (the couplings' unknowns); returns its norm.
      * Collective.
      */
     double
@@ -244,8 +270,10 @@ namespace impm
     BasisType                            basis = BasisType::gimp;
     std::vector<types::global_dof_index> index_in_system;
     IndexSet                             owned;
-    /** This process's rows of nodal DoFs (its first rows; F-bar's cell
-     *  pressures follow them). */
+    /** This process's first row. */
+    types::global_dof_index first_row = 0;
+    /** This process's rows of nodal DoFs (its first rows; the couplings'
+     *  unknowns follow them). */
     types::global_dof_index n_nodal_rows = 0;
   };
 } // namespace impm

@@ -1,0 +1,514 @@
+#ifndef impm_coupling_coupling_h
+#define impm_coupling_coupling_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <impm/base/plugin_list.h>
+#include <impm/core/parameters.h>
+#include <impm/grid/background_grid.h>
+#include <impm/io/run_state.h>
+#include <impm/points/material_points.h>
+#include <impm/system/load_step_system.h>
+#include <impm/system/point_step.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /** @brief A value measured after a converged load step. */
+  struct StepMeasure
+  {
+    /** Its column in steps.csv and key in summary.json. */
+    std::string column;
+    /** Its word in the progress log. */
+    std::string label;
+    /** The value. */
+    double value;
+  };
+
+  /**
+   * @brief What the statement of equilibrium gives a coupling of each point
+   * of the load step (by its index in LoadStepSystem::point_steps): the
+   * gradients it assembles with and the map of those to the current
+   * configuration. The Assembler implements it.
+   */
+  template <int dim>
+  class PointGradients
+  {
+  public:
+    /** @brief Destructor. */
+    virtual ~PointGradients() = default;
+
+    /** @brief The statement's gradients of point @p p, one per node of
+     *  its support. */
+    virtual const Tensor<1, dim> *
+    gradients(const unsigned int p) const = 0;
+
+    /** @brief What maps point @p p's gradients to the current
+     *  configuration (@f$\Delta F^{-1}@f$ for start-of-step gradients, the
+     *  identity for mapped ones). */
+    virtual Tensor<2, dim>
+    gradient_map(const unsigned int p) const = 0;
+  };
+
+  /**
+   * @brief Where a coupling's rows of unknowns go in the load step's linear
+   * system: after this process's nodal rows, coupling after coupling.
+   */
+  struct CouplingRows
+  {
+    /** The first of the rows this coupling owns on this process. */
+    types::global_dof_index first;
+    /** The rows this process owns in the system (all couplings'). */
+    const IndexSet &owned;
+  };
+
+  /**
+   * @brief Everything that adds to a load step's equilibrium beside the
+   * points' stresses and the loads: a stabilisation, a kinematic treatment,
+   * a contact, springs, and whatever comes next (inertia, pore water).
+   * ASPECT's assembler manager and Lethe's physics assemblers are the
+   * pattern: the load-step code (LoadStepSystem, LoadStepProblem, the
+   * Assembler, MPMSolver) loops over the scene's couplings (Couplings) and
+   * names none of them.
+   *
+   * A coupling may
+   * - add rows of unknowns of its own to the sparse system (prepare(),
+   *   setup(), add_row_residuals(), add_solution()), with dense blocks in
+   *   the sparsity pattern,
+   * - add a few unknowns shared by all processes (n_global_unknowns()),
+   *   which LoadStepProblem eliminates together, all couplings' in one
+   *   bordered block,
+   * - add forces and their derivative (add_forces(), add_matrix(), and the
+   *   part of the matrix that is fixed over a load step,
+   *   add_constant_matrix()),
+   * - set the points' volume change (sets_point_volumes(): F-bar), and
+   *   with it change each point's tangent,
+   * - keep state that changes when a step is accepted (accept()), is saved
+   *   in a checkpoint (save(), load()) and written (step_measures()),
+   * - describe itself in a line (descriptions()).
+   *
+   * Every function has a default that does nothing, so that a coupling
+   * implements only what it adds. Functions marked collective are called
+   * on every process of every coupling.
+   *
+   * A new coupling is a class derived from this one and a registration
+   * line (IMPM_REGISTER_COUPLING); doc/architecture.md follows a load step
+   * through these functions.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class Coupling
+  {
+  public:
+    /** @brief Destructor. */
+    virtual ~Coupling() = default;
+
+    /** @name The run */
+    /** @{ */
+
+    /** @brief Lines for the run's list of effects. */
+    virtual std::vector<std::string>
+    descriptions() const = 0;
+
+    /** @brief Notes for the start-up report on the linear solver
+     *  @p solver (none by default). */
+    virtual std::vector<std::string>
+    notes(const Parameters::Solver &solver) const;
+
+    /** @brief Whether the linear systems need a direct solver (what
+     *  'automatic' then chooses). */
+    virtual bool
+    needs_direct_solver() const;
+
+    /** @brief Entries this coupling stores in every point (their place:
+     *  PointLayout::coupling_state); 0 by default. */
+    virtual unsigned int
+    point_state_entries() const;
+
+    /** @brief Check the scene once its points exist, in a run that does
+     *  not resume. Collective. */
+    virtual void
+    check_start(const MaterialPoints<dim> &material_points) const;
+
+    /** @brief Save what a resumed run needs into @p state. */
+    virtual void
+    save(RunState &state) const;
+
+    /** @brief Read what save() stored. */
+    virtual void
+    load(const RunState &state);
+    /** @} */
+
+    /** @name The load step's system */
+    /** @{ */
+
+    /**
+     * @brief Before the system is numbered: see the step's points and which
+     * local DoFs they touch (@p touched), and return the number of rows of
+     * unknowns of its own this process adds (0 by default). Collective.
+     */
+    virtual unsigned int
+    prepare(const MaterialPoints<dim> &material_points,
+            const LoadStepSystem<dim> &system,
+            const std::vector<bool>   &touched);
+
+    /**
+     * @brief Once the system is numbered: number its own rows from @p
+     * rows.first, and append to @p blocks the system indices (ascending) of
+     * every dense block it adds to the matrix, for the sparsity pattern.
+     * Collective.
+     */
+    virtual void
+    setup(const MaterialPoints<dim>                         &material_points,
+          const LoadStepSystem<dim>                         &system,
+          const CouplingRows                                &rows,
+          std::vector<std::vector<types::global_dof_index>> &blocks);
+    /** @} */
+
+    /** @name One attempt at a load step */
+    /** @{ */
+
+    /**
+     * @brief Start an attempt from load factor @p start to @p target, before
+     * the first residual. Collective.
+     */
+    virtual void
+    begin_attempt(const MaterialPoints<dim> &material_points,
+                  const LoadStepSystem<dim> &system,
+                  const double               start,
+                  const double               target);
+
+    /**
+     * @brief Whether this coupling sets the points' volume change: then the
+     * Assembler hands it every point's stress update
+     * (update_stresses()), and changes each point's tangent through
+     * point_tangent(). At most one coupling of a scene may.
+     */
+    virtual bool
+    sets_point_volumes() const;
+
+    /**
+     * @brief The stress update of every point, when sets_point_volumes().
+     * @param point_steps The points, with their true deformation gradient
+     *   increments (all with positive determinant).
+     * @param update_point Runs point q's return map on its
+     *   PointStep::deformation_increment; false if the model threw.
+     * @return False if the update failed (an inadmissible iterate).
+     * Collective.
+     */
+    virtual bool
+    update_stresses(std::vector<PointStep<dim>>             &point_steps,
+                    const std::function<bool(unsigned int)> &update_point);
+
+    /**
+     * @brief The tangent of point @p p with this coupling's part, when
+     * sets_point_volumes() (the point's group is then assembled without
+     * major symmetry).
+     * @param p The point's index in the point steps.
+     * @param tangent The statement's tangent (times volume).
+     * @param force_stress The statement's force stress (times volume).
+     * @param gradient_map As PointGradients::gradient_map().
+     */
+    virtual Tensor<4, dim>
+    point_tangent(const unsigned int    p,
+                  const Tensor<4, dim> &tangent,
+                  const Tensor<2, dim> &force_stress,
+                  const Tensor<2, dim> &gradient_map);
+
+    /**
+     * @brief Add this coupling's force on the material, with the sign of an
+     * internal force, at the displacement increment @p increment to @p
+     * internal_force (before its compress()).
+     */
+    virtual void
+    add_forces(const LoadStepSystem<dim> &system,
+               const NodalVector         &increment,
+               NodalVector               &internal_force);
+
+    /**
+     * @brief Append the residuals of its own rows that this process owns,
+     * as (system index, residual), the residual with the sign of an
+     * internal force. Collective.
+     */
+    virtual void
+    add_row_residuals(
+      std::vector<std::pair<types::global_dof_index, double>> &residuals);
+
+    /**
+     * @brief The size of the forces its rows and global unknowns are
+     * measured against (applied forces), added to the residual's reference
+     * (0 by default).
+     */
+    virtual double
+    reference_force() const;
+
+    /**
+     * @brief Whether its state changed (into or out of a contact) at the
+     * last add_forces() against the one before in the same attempt: a full
+     * linear solve follows, and a tangent check leaves the column out.
+     * Collective.
+     */
+    virtual bool
+    state_changed() const;
+
+    /**
+     * @brief Add the part of the matrix that does not change within a load
+     * step (after setup(), to a zeroed matrix); returns whether it added
+     * anything. The system keeps it for the step's later assemblies.
+     */
+    virtual bool
+    add_constant_matrix(const LoadStepSystem<dim>      &system,
+                        TrilinosWrappers::SparseMatrix &matrix);
+
+    /**
+     * @brief Add the derivative of its forces and rows at the last residual
+     * to @p matrix (after the points' blocks, before the compress()).
+     * Returns whether an entry went through the matrix's add() (then the
+     * matrix is compressed).
+     */
+    virtual bool
+    add_matrix(const PointGradients<dim>      &gradients,
+               const LoadStepSystem<dim>      &system,
+               TrilinosWrappers::SparseMatrix &matrix);
+
+    /**
+     * @brief Add the Newton correction @p solution (the system's
+     * numbering) to its own rows' unknowns.
+     */
+    virtual void
+    add_solution(const TrilinosWrappers::MPI::Vector &solution);
+
+    /**
+     * @brief The tangent check: perturb its own row @p row by @p amount
+     * over the cell size if this process owns it; returns the factor the
+     * perturbation was scaled by, or 0 (not its row, or not this
+     * process's).
+     */
+    virtual double
+    perturb_row(const types::global_dof_index row, const double amount);
+
+    /**
+     * @brief The largest change of its unknowns over the attempt, in cells
+     * (0 by default). Collective.
+     */
+    virtual double
+    max_unknown_increment() const;
+    /** @} */
+
+    /** @name Unknowns shared by all processes */
+    /** @{ */
+
+    /** @brief Their number (0 by default). */
+    virtual unsigned int
+    n_global_unknowns() const;
+
+    /** @brief Their residuals at the last add_forces() (with the sign of
+     *  f_ext - f_int), the same on every process. Collective. */
+    virtual Vector<double>
+    global_residuals() const;
+
+    /**
+     * @brief The blocks of the matrix that couple its global unknowns with
+     * the DoFs, at the last add_forces(): per unknown j the column @p
+     * columns[j] and the row @p rows[j] (full numbering, compressed), and
+     * the derivative of their forces with respect to each other, @p
+     * corner. Collective.
+     */
+    virtual void
+    global_coupling(const LoadStepSystem<dim> &system,
+                    std::vector<NodalVector>  &columns,
+                    std::vector<NodalVector>  &rows,
+                    FullMatrix<double>        &corner) const;
+
+    /** @brief Add @p correction (one per global unknown, the same on every
+     *  process) to them. */
+    virtual void
+    add_to_global_unknowns(const Vector<double> &correction);
+
+    /** @brief Why global unknown @p j with no stiffness of its own cannot
+     *  be solved for (a line for the failed solve). */
+    virtual std::string
+    unbalanced_unknown(const unsigned int j) const;
+    /** @} */
+
+    /** @name A converged step */
+    /** @{ */
+
+    /** @brief Take the converged step: store what it keeps (in the points
+     *  too). Collective. */
+    virtual void
+    accept(MaterialPoints<dim> &material_points);
+
+    /** @brief The force of the material on what this coupling stands for
+     *  (bodies, springs) at the last accepted step, which carries part of
+     *  the load (zero by default). */
+    virtual Tensor<1, dim>
+    force_from_material() const;
+
+    /** @brief The columns of its step_measures(), for steps.csv. */
+    virtual std::vector<std::string>
+    step_measure_columns() const;
+
+    /** @brief Its values after the last accepted step (at load factor @p
+     *  load_factor). */
+    virtual void
+    step_measures(const double              load_factor,
+                  std::vector<StepMeasure> &measures) const;
+    /** @} */
+  };
+
+  /**
+   * @brief What a coupling is created from: the scene, its parameter file
+   * (for couplings that declare their own subsection) and the grid.
+   */
+  template <int dim>
+  struct CouplingInputs
+  {
+    /** The scene. */
+    const Parameters::All<dim> &parameters;
+    /** The scene's parameter file. */
+    ParameterHandler &prm;
+    /** The background grid. */
+    const BackgroundGrid<dim> &grid;
+  };
+
+  /**
+   * @brief The couplings, registered by name: an entry's create() returns
+   * nullptr when the scene does not ask for it (which then costs nothing);
+   * its declare_parameters() declares its subsection's entries (entered by
+   * Couplings::declare_parameters(); empty for couplings whose parameters
+   * live elsewhere).
+   */
+  template <int dim>
+  using CouplingList = PluginList<Coupling<dim>, const CouplingInputs<dim> &>;
+
+  /**
+   * @brief The scene's couplings, in the order of their names, and the loops
+   * over them that the load-step code calls.
+   */
+  template <int dim>
+  class Couplings
+  {
+  public:
+    /** @brief Declare the subsections of the registered couplings that
+     *  declare parameters. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** @brief Create the couplings the scene asks for. */
+    explicit Couplings(const CouplingInputs<dim> &inputs);
+
+    /** @brief The couplings. */
+    const std::vector<std::unique_ptr<Coupling<dim>>> &
+    list() const
+    {
+      return couplings;
+    }
+
+    /** @brief The coupling of type @p Type, or nullptr. */
+    template <typename Type>
+    const Type *
+    find() const
+    {
+      for (const auto &coupling : couplings)
+        if (const auto *found = dynamic_cast<const Type *>(coupling.get()))
+          return found;
+      return nullptr;
+    }
+
+    /** @brief The coupling that sets the points' volumes, or nullptr. */
+    Coupling<dim> *
+    volume_coupling() const
+    {
+      return sets_volumes;
+    }
+
+    /** @brief The entries all couplings store per point. */
+    unsigned int
+    point_state_entries() const;
+
+    /** @brief Whether any coupling needs a direct linear solver. */
+    bool
+    need_direct_solver() const;
+
+    /** @brief The total number of unknowns shared by all processes. */
+    unsigned int
+    n_global_unknowns() const
+    {
+      return n_global;
+    }
+
+    /**
+     * @brief The setup of a load step's system (LoadStepSystem::number(),
+     * the couplings' prepare() and setup(), LoadStepSystem::make_pattern()).
+     * Returns whether the matrix of the step before was kept. Collective.
+     */
+    bool
+    set_up_system(const MaterialPoints<dim> &material_points,
+                  LoadStepSystem<dim>       &system);
+
+    /** @brief Sum of every coupling's force_from_material(). */
+    Tensor<1, dim>
+    force_from_material() const;
+
+    /** @brief Whether any coupling's state changed. Collective. */
+    bool
+    state_changed() const;
+
+    /** @brief The global unknowns' residuals, coupling after coupling.
+     *  Collective. */
+    Vector<double>
+    global_residuals() const;
+
+    /** @brief Add @p correction to the global unknowns, coupling after
+     *  coupling. */
+    void
+    add_to_global_unknowns(const Vector<double> &correction) const;
+
+    /** @brief Why global unknown @p j cannot be solved for. */
+    std::string
+    unbalanced_unknown(const unsigned int j) const;
+
+  private:
+    std::vector<std::unique_ptr<Coupling<dim>>> couplings;
+    Coupling<dim>                              *sets_volumes = nullptr;
+    unsigned int                                n_global     = 0;
+  };
+} // namespace impm
+
+/**
+ * Register coupling CLASS (a class template over dim, constructed from
+ * CouplingInputs) under NAME, created when @p WANTED (an expression of
+ * `inputs`, a CouplingInputs<dim>) holds; @p DECLARE declares its
+ * parameters (a lambda in parentheses taking a ParameterHandler, or
+ * nullptr). The one line a coupling needs besides its class.
+ */
+#define IMPM_REGISTER_COUPLING(CLASS, NAME, WANTED, DECLARE) \
+  IMPM_REGISTER_PLUGIN_IN_BOTH_DIMENSIONS(                   \
+    impm::CouplingList,                                      \
+    CLASS,                                                   \
+    NAME,                                                    \
+    DECLARE,                                                 \
+    ([](const impm::CouplingInputs<dim> &inputs)             \
+       -> std::unique_ptr<impm::Coupling<dim>> {             \
+      if (!(WANTED))                                         \
+        return nullptr;                                      \
+      return std::make_unique<CLASS<dim>>(inputs);           \
+    }))
+
+#endif
