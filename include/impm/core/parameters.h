@@ -425,7 +425,6 @@ namespace impm
       parse_parameters(ParameterHandler &prm, const unsigned int dimension);
     };
 
-    /** @brief Everything a scene says. */
     /** @brief When the run saves its state (subsection "Checkpoint"). */
     struct Checkpoint
     {
@@ -443,6 +442,7 @@ namespace impm
       parse_parameters(ParameterHandler &prm);
     };
 
+    /** @brief Everything a scene says. */
     template <int dim>
     struct All
     {
