@@ -7,9 +7,11 @@
 
 #include <impm/base/plugin_list.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impm
