@@ -53,7 +53,7 @@ n_points=$(grep -c 'part="0" file="points_' results/points.pvd)
 spans results/rigid_2_00003.vtu 0 0.0015 0.5015 1e-12 ||
   fail "the plate's surface is not where it was moved"
 
-# 2. Stopped after step 10 and resumed.
+# 2. Stopped after step 1 and resumed.
 rm -rf results
 "$impm" "$scene" "${settings[@]}" --set "Checkpoint/Interval=1" \
   --stop-after-step 1 > part1.txt 2>&1 || fail "the first part failed"

@@ -30,8 +30,10 @@ for scene in "$scenes"/*.prm; do
   initial=$(sed -n 's/^total mass: \(\S*\) (initial \(\S*\))$/\2/p' "$name.txt")
   final=$(sed -n 's/^total mass: \(\S*\) (initial \(\S*\))$/\1/p' "$name.txt")
   [ -n "$final" ] && [ "$final" = "$initial" ] || { echo "FAILED: $name mass $initial -> $final"; status=1; }
-  if grep -q "NO$" "$name.txt"; then
-    echo "FAILED: $name: $(grep 'NO$' "$name.txt")"; status=1
+  # A failed check ends its line in "NO", or says "NO (" with its value
+  # (the tangent check).
+  if grep -qE 'NO$|NO \(' "$name.txt"; then
+    echo "FAILED: $name: $(grep -E 'NO$|NO \(' "$name.txt")"; status=1
   fi
   [ -s "$name/summary.json" ] || { echo "FAILED: $name wrote no summary.json"; status=1; }
   echo "$name: $(grep -c '^step' "$name.txt") load steps, $(grep -c ': step cut$' "$name.txt") cut, complete"

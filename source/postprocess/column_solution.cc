@@ -55,8 +55,10 @@ namespace impm
   ColumnSolution<dim>::measure_step(const RunContext<dim> &context,
                                     StepRecord            &record)
   {
-    record.measures.push_back(
-      {"error_sigma_zz", "error", error(context, record.target)});
+    record.measures.push_back({"error_sigma_zz",
+                               "error",
+                               error(context, record.target),
+                               MeasureKind::number});
   }
 
 

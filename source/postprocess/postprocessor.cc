@@ -8,26 +8,60 @@
 
 namespace impm
 {
+  namespace
+  {
+    /**
+     * The line of @p record for StepRecord::log_line(): its measures in SI
+     * units if @p scales is nullptr, else in those scales.
+     */
+    std::string
+    format_log_line(const StepRecord &record, const MeasureScales *scales)
+    {
+      std::ostringstream line;
+      line << "step " << std::setw(3) << record.step_number << "  load "
+           << std::fixed << std::setprecision(4) << record.target;
+      if (record.converged())
+        {
+          line << "  iterations " << record.newton.n_iterations();
+          for (const StepMeasure &measure : record.measures)
+            {
+              char buffer[32];
+              if (scales == nullptr || measure.kind == MeasureKind::number)
+                std::snprintf(buffer, sizeof(buffer), "%.4e", measure.value);
+              else if (measure.kind == MeasureKind::count)
+                std::snprintf(buffer, sizeof(buffer), "%.0f", measure.value);
+              else
+                std::snprintf(buffer,
+                              sizeof(buffer),
+                              "%.6f",
+                              measure.value /
+                                (measure.kind == MeasureKind::force ?
+                                   scales->force :
+                                   scales->length));
+              line << "  " << measure.label << ' ' << buffer;
+            }
+        }
+      else
+        line << "  " << name_of(record.newton.outcome) << " after "
+             << record.newton.n_iterations() << " iterations: step cut";
+      return line.str();
+    }
+  } // namespace
+
+
+
   std::string
   StepRecord::log_line() const
   {
-    std::ostringstream line;
-    line << "step " << std::setw(3) << step_number << "  load " << std::fixed
-         << std::setprecision(4) << target;
-    if (converged())
-      {
-        line << "  iterations " << newton.n_iterations();
-        for (const StepMeasure &measure : measures)
-          {
-            char buffer[32];
-            std::snprintf(buffer, sizeof(buffer), "%.4e", measure.value);
-            line << "  " << measure.label << ' ' << buffer;
-          }
-      }
-    else
-      line << "  " << name_of(newton.outcome) << " after "
-           << newton.n_iterations() << " iterations: step cut";
-    return line.str();
+    return format_log_line(*this, nullptr);
+  }
+
+
+
+  std::string
+  StepRecord::log_line(const MeasureScales &scales) const
+  {
+    return format_log_line(*this, &scales);
   }
 
 

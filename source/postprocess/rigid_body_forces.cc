@@ -58,20 +58,26 @@ namespace impm
             for (unsigned int d = 0; d < dim; ++d)
               record.measures.push_back({prefix + "force_" + Names::axis(d),
                                          label + Names::axis(d),
-                                         forces[k].total[d]});
-            record.measures.push_back(
-              {prefix + "normal_force", label + "n", forces[k].normal.norm()});
+                                         forces[k].total[d],
+                                         MeasureKind::force});
+            record.measures.push_back({prefix + "normal_force",
+                                       label + "n",
+                                       forces[k].normal.norm(),
+                                       MeasureKind::force});
             record.measures.push_back({prefix + "friction_force",
                                        label + "t",
-                                       forces[k].tangential.norm()});
+                                       forces[k].tangential.norm(),
+                                       MeasureKind::force});
             record.measures.push_back(
               {prefix + "contacts",
                label + "c",
-               static_cast<double>(forces[k].n_contacts)});
+               static_cast<double>(forces[k].n_contacts),
+               MeasureKind::count});
             record.measures.push_back(
               {prefix + "slipping",
                label + "s",
-               static_cast<double>(forces[k].n_slipping)});
+               static_cast<double>(forces[k].n_slipping),
+               MeasureKind::count});
             const Tensor<1, dim> displacement =
               context.couplings.template find<RigidContact<dim>>()
                 ->displacement_of(k, record.target);
@@ -79,7 +85,8 @@ namespace impm
               record.measures.push_back(
                 {prefix + "displacement_" + Names::axis(d),
                  label + "u" + Names::axis(d),
-                 displacement[d]});
+                 displacement[d],
+                 MeasureKind::length});
           }
       }
 

@@ -22,9 +22,11 @@ namespace impm
     /**
      * @brief What a run prints on the terminal: a line per load-step attempt
      * as it happens or, in test mode ('Testing/Enabled'), the summary a test
-     * compares, the same on any number of processes: the attempts' lines,
-     * the run's totals and checks, the final state, and the points with the
-     * lowest ids and those nearest the probes.
+     * compares, the same on any number of processes: the attempts' lines
+     * (their forces and lengths in the summary's scales, see
+     * StepRecord::log_line(const MeasureScales &)), the run's totals and
+     * checks, the final state, and the points with the lowest ids and those
+     * nearest the probes.
      */
     template <int dim>
     class TerminalOutput : public Postprocessor<dim>
@@ -36,7 +38,7 @@ namespace impm
                  const RunStatistics<dim> &) override
       {
         if (context.parameters.testing.enabled)
-          log_lines.push_back(record.log_line());
+          log_lines.push_back(record.log_line(scales(context)));
         else if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
           std::cout << record.log_line() << "  residual " << std::scientific
                     << std::setprecision(2) << record.newton.final_residual()
@@ -63,6 +65,17 @@ namespace impm
       }
 
     private:
+      /** The summary's scales: L and S L^(dim-1) of the scene's Testing
+       *  subsection. */
+      static MeasureScales
+      scales(const RunContext<dim> &context)
+      {
+        const auto &testing = context.parameters.testing;
+        return {testing.reference_length,
+                testing.reference_stress * std::pow(testing.reference_length,
+                                                    static_cast<int>(dim) - 1)};
+      }
+
       /** The values of the points to print (on rank 0; collective). */
       std::vector<PointValues>
       printed_points(const RunContext<dim> &context) const;
@@ -152,7 +165,7 @@ namespace impm
       const auto  &state      = statistics.final_state;
       const double length     = parameters.testing.reference_length;
       const double stress     = parameters.testing.reference_stress;
-      const double force = stress * std::pow(length, static_cast<int>(dim) - 1);
+      const double force      = scales(context).force;
       for (const auto &line : log_lines)
         std::cout << line << '\n';
       // No pair of residuals near the solution (a step converged in one or

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impm
@@ -425,7 +426,6 @@ namespace impm
       parse_parameters(ParameterHandler &prm, const unsigned int dimension);
     };
 
-    /** @brief Everything a scene says. */
     /** @brief When the run saves its state (subsection "Checkpoint"). */
     struct Checkpoint
     {
@@ -443,6 +443,7 @@ namespace impm
       parse_parameters(ParameterHandler &prm);
     };
 
+    /** @brief Everything a scene says. */
     template <int dim>
     struct All
     {

@@ -28,6 +28,24 @@ namespace impm
 {
   using namespace dealii;
 
+  /**
+   * @brief What a StepMeasure's value is: how the test summary prints it in
+   * its scales (Testing/Reference length L and stress S).
+   */
+  enum class MeasureKind
+  {
+    /** A force (N; per m of thickness in 2D): printed in S L^(dim-1), to 6
+     *  decimals. */
+    force,
+    /** A length or a displacement (m): printed in L, to 6 decimals. */
+    length,
+    /** A count: printed as an integer. */
+    count,
+    /** A dimensionless number: printed as it is, to 5 significant
+     *  digits. */
+    number
+  };
+
   /** @brief A value measured after a converged load step. */
   struct StepMeasure
   {
@@ -37,6 +55,9 @@ namespace impm
     std::string label;
     /** The value. */
     double value;
+    /** What it is, for the test summary's scales (not saved in
+     *  checkpoints: RunStatistics::load() restores the values only). */
+    MeasureKind kind = MeasureKind::number;
   };
 
   /**

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -278,11 +279,11 @@ namespace impm
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
     AffineConstraints<double>                          constraints;
 
-    /** Local indices (owned and ghost) of each grid node's DoFs. */
     /** The component of each local DoF. */
     std::vector<unsigned char> component_of_local_dof;
     /** The position of each local DoF's grid node. */
     std::vector<Point<dim>> position_of_local_dof;
+    /** Local indices (owned and ghost) of each grid node's DoFs. */
     std::unordered_map<std::uint64_t, std::array<unsigned int, dim>>
       dofs_of_node;
     /** Prescribed DoFs (local index) and their displacement at full load. */

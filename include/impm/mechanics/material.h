@@ -7,9 +7,11 @@
 
 #include <impm/base/plugin_list.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impm
@@ -50,35 +52,6 @@ namespace impm
     double hardening_variable = 0.;
   };
 
-  /**
-   * @brief The response of an isotropic function of the trial logarithmic
-   * strain, @f$\tau = \sum_a \tau_a(\varepsilon^{tr})\, n_a \otimes
-   * n_a@f$, to perturbations of the deformation increment: the step from a
-   * principal-space tangent to the full tangent, shared by all models.
-   *
-   * For the perturbation (k, l) the principal-frame gradient is
-   * @f$G'_{ab} = Q_{ka} R_{bl}@f$, the change of the trial strain
-   * @f$d\varepsilon'_{ab} = \tfrac12 \theta_{ab} (\lambda_b G'_{ab} +
-   * \lambda_a G'_{ba})@f$ with the divided differences @f$\theta@f$ of the
-   * logarithm, and the change of stress @f$d\tau'_{aa} = \sum_b D_{ab}\,
-   * d\varepsilon'_{bb}@f$ on the diagonal, @f$d\tau'_{ab} = c_{ab}\,
-   * d\varepsilon'_{ab}@f$ off it. The result is @f$T_{imkl} =
-   * Q_{ia}\,d\tau'_{ab}\,R_{bm}@f$: with @f$R = Q^T@f$ the tangent
-   * @f$\mathcal C@f$, with @f$R = Q^T \Delta F^{-T}@f$ the material part of
-   * the pulled-back tangent.
-   *
-   * @param trial_eigenvalues Eigenvalues @f$\lambda_a@f$ of @f$b^e_{tr}@f$.
-   * @param Q Its eigenvectors, one per column.
-   * @param R The rotation of the perturbation (see above).
-   * @param D Principal algorithmic tangent, @f$D_{ab} = \partial\tau_a /
-   *   \partial \varepsilon^{tr}_b@f$.
-   * @param shear Off-diagonal coefficients @f$c_{ab}@f$ (a != b; for
-   *   distinct strains @f$(\tau_a - \tau_b)/(\varepsilon_a -
-   *   \varepsilon_b)@f$).
-   * @param n_components 2 in plane strain, 3 in 3D.
-   * @param[out] T The response; entries with an index at or above
-   *   @p n_components are not set.
-   */
   /**
    * @brief The spectral decomposition of the trial elastic left
    * Cauchy-Green tensor @f$b^e_{tr} = \Delta F\, b^e_n\, \Delta F^T@f$
@@ -127,6 +100,35 @@ namespace impm
     const double                 mu,
     const SymmetricTensor<2, 3> &kirchhoff_stress);
 
+  /**
+   * @brief The response of an isotropic function of the trial logarithmic
+   * strain, @f$\tau = \sum_a \tau_a(\varepsilon^{tr})\, n_a \otimes
+   * n_a@f$, to perturbations of the deformation increment: the step from a
+   * principal-space tangent to the full tangent, shared by all models.
+   *
+   * For the perturbation (k, l) the principal-frame gradient is
+   * @f$G'_{ab} = Q_{ka} R_{bl}@f$, the change of the trial strain
+   * @f$d\varepsilon'_{ab} = \tfrac12 \theta_{ab} (\lambda_b G'_{ab} +
+   * \lambda_a G'_{ba})@f$ with the divided differences @f$\theta@f$ of the
+   * logarithm, and the change of stress @f$d\tau'_{aa} = \sum_b D_{ab}\,
+   * d\varepsilon'_{bb}@f$ on the diagonal, @f$d\tau'_{ab} = c_{ab}\,
+   * d\varepsilon'_{ab}@f$ off it. The result is @f$T_{imkl} =
+   * Q_{ia}\,d\tau'_{ab}\,R_{bm}@f$: with @f$R = Q^T@f$ the tangent
+   * @f$\mathcal C@f$, with @f$R = Q^T \Delta F^{-T}@f$ the material part of
+   * the pulled-back tangent.
+   *
+   * @param trial_eigenvalues Eigenvalues @f$\lambda_a@f$ of @f$b^e_{tr}@f$.
+   * @param Q Its eigenvectors, one per column.
+   * @param R The rotation of the perturbation (see above).
+   * @param D Principal algorithmic tangent, @f$D_{ab} = \partial\tau_a /
+   *   \partial \varepsilon^{tr}_b@f$.
+   * @param shear Off-diagonal coefficients @f$c_{ab}@f$ (a != b; for
+   *   distinct strains @f$(\tau_a - \tau_b)/(\varepsilon_a -
+   *   \varepsilon_b)@f$).
+   * @param n_components 2 in plane strain, 3 in 3D.
+   * @param[out] T The response; entries with an index at or above
+   *   @p n_components are not set.
+   */
   void
   principal_frame_response(const std::array<double, 3> &trial_eigenvalues,
                            const Tensor<2, 3>          &Q,

@@ -5,6 +5,9 @@
 
 #include <impm/basis/basis_functions.h>
 
+#include <array>
+#include <utility>
+
 namespace impm
 {
   using namespace dealii;

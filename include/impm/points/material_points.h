@@ -12,6 +12,8 @@
 #include <impm/io/run_state.h>
 #include <impm/system/point_step.h>
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace impm

@@ -3,6 +3,9 @@
 
 #include <impm/postprocess/postprocessor.h>
 
+#include <string>
+#include <vector>
+
 namespace impm
 {
   /**

@@ -59,6 +59,18 @@ namespace impm
     std::vector<std::string> step_measure_columns = {};
   };
 
+  /**
+   * @brief The scales in which the test summary prints the step measures:
+   * the reference length L and the reference force S L^(dim-1) of
+   * Parameters::Testing.
+   */
+  struct MeasureScales
+  {
+    /** Lengths are printed divided by this (m). */
+    double length;
+    /** Forces are printed divided by this (N, per m in 2D). */
+    double force;
+  };
 
   /** @brief One attempt at a load step. */
   struct StepRecord
@@ -97,10 +109,21 @@ namespace impm
     /**
      * @brief The line of the progress log (without the residual):
      * "step   3  load 0.0750  iterations 4  error 1.2e-03" or
-     * "step   3  load 0.0750  diverged after 5 iterations: step cut".
+     * "step   3  load 0.0750  diverged after 5 iterations: step cut";
+     * the measures in SI units, to 5 significant digits.
      */
     std::string
     log_line() const;
+
+    /**
+     * @brief The line of the test summary: as log_line(), but with the
+     * forces and lengths among the measures divided by @p scales and
+     * printed to 6 decimals, and counts as integers (see MeasureKind), so
+     * that a test compares them to 1e-6 of its scales as the rest of the
+     * summary: "step   3  load 0.0750  iterations 4  R1x 0.018258  R1c 32".
+     */
+    std::string
+    log_line(const MeasureScales &scales) const;
   };
 
   /** @brief Totals over the run's load steps, for the summaries. */
