@@ -588,6 +588,15 @@ namespace impm
 
 
   template <int dim>
+  bool
+  RigidContact<dim>::holds_material(const unsigned int) const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
   Tensor<1, dim>
   RigidContact<dim>::force_from_material() const
   {

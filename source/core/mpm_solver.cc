@@ -113,6 +113,12 @@ namespace impm
     , newton_solver(parameters.solver)
     , resume_state(resume_state)
   {
+    SceneChecks::check_supports(parameters, [this](const unsigned int c) {
+      for (const auto &coupling : couplings.list())
+        if (coupling->holds_material(c))
+          return true;
+      return false;
+    });
     problem.check_tangents(parameters.testing.check_tangent);
     for (const auto &coupling : couplings.list())
       if (resume_state == nullptr)

@@ -148,35 +148,6 @@ namespace impm
         return false;
       }
 
-      template <int dim>
-      void
-      check_supports(const Parameters::All<dim> &parameters)
-      {
-        // Rigid bodies may hold the material instead (a floor, a plate):
-        // whether they do is known only once they touch it.
-        if (!parameters.rigid_bodies.empty())
-          return;
-        const auto &grid = parameters.grid;
-        for (unsigned int component = 0; component < dim; ++component)
-          {
-            bool held = false;
-            for (unsigned int f = 0; f < 2 * dim && !held; ++f)
-              held =
-                Parameters::constrains(grid.face_conditions[f], f, component) &&
-                face_touches_material(parameters, f);
-            if (!held)
-              throw InputError(
-                "Nothing holds the material in the " + Names::axis(component) +
-                " direction: no 'Grid/Condition' that fixes " +
-                Names::axis(component) +
-                " displacements acts on a grid face within one cell of a "
-                "body, so the system would be singular. Set, e.g., "
-                "'Grid/Condition " +
-                Names::face(2 * component) +
-                "' to roller or fixed on a face the material touches.");
-          }
-      }
-
       /**
        * The memory available to the run: the sum over its machines of
        * MemAvailable (Linux), counted once per machine; 0 if unknown.
@@ -285,8 +256,44 @@ namespace impm
         }
       check_bodies_inside(parameters);
       check_face_regions(parameters.grid);
-      check_supports(parameters);
     }
+
+
+
+    template <int dim>
+    void
+    check_supports(const Parameters::All<dim>              &parameters,
+                   const std::function<bool(unsigned int)> &held_elsewhere)
+    {
+      const auto &grid = parameters.grid;
+      for (unsigned int component = 0; component < dim; ++component)
+        {
+          bool held = held_elsewhere(component);
+          for (unsigned int f = 0; f < 2 * dim && !held; ++f)
+            held =
+              Parameters::constrains(grid.face_conditions[f], f, component) &&
+              face_touches_material(parameters, f);
+          if (!held)
+            throw InputError(
+              "Nothing holds the material in the " + Names::axis(component) +
+              " direction: no 'Grid/Condition' that fixes " +
+              Names::axis(component) +
+              " displacements acts on a grid face within one cell of a "
+              "body, so the system would be singular. Set, e.g., "
+              "'Grid/Condition " +
+              Names::face(2 * component) +
+              "' to roller or fixed on a face the material touches.");
+        }
+    }
+
+
+
+    template void
+    check_supports<2>(const Parameters::All<2> &,
+                      const std::function<bool(unsigned int)> &);
+    template void
+    check_supports<3>(const Parameters::All<3> &,
+                      const std::function<bool(unsigned int)> &);
 
 
 

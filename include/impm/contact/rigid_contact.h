@@ -109,6 +109,11 @@ namespace impm
     std::string
     unbalanced_unknown(const unsigned int j) const override;
 
+    /** @brief True: rigid bodies may hold the material (a floor, a
+     *  plate); whether they do is known only once they touch it. */
+    bool
+    holds_material(const unsigned int component) const override;
+
     /** @brief The sum of body_forces(). */
     Tensor<1, dim>
     force_from_material() const override;

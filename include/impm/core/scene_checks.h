@@ -5,6 +5,8 @@
 
 #include <impm/core/parameters.h>
 
+#include <functional>
+
 namespace impm
 {
   /**
@@ -14,12 +16,12 @@ namespace impm
    *
    * Checked here: every body lies inside the grid; every region of a face
    * condition holds a node of its face; every displacement component is
-   * held by some face condition near the material (else the system is
-   * singular); the memory the scene needs fits in the memory of the
-   * machines the run has. Checked where the information is: overlapping
-   * bodies and bodies without points when the points are seeded
-   * (MaterialPoints), polygons when they are read (Body), loads off the
-   * material when the effects start (ForceEffect::initialize).
+   * held by some face condition near the material or a coupling (else the
+   * system is singular: check_supports(), once the couplings exist); the memory
+   * the scene needs fits in the memory of the machines the run has. Checked
+   * where the information is: overlapping bodies and bodies without points when
+   * the points are seeded (MaterialPoints), polygons when they are read (Body),
+   * loads off the material when the effects start (ForceEffect::initialize).
    */
   namespace SceneChecks
   {
@@ -30,6 +32,16 @@ namespace impm
     template <int dim>
     void
     check(const Parameters::All<dim> &parameters, const MPI_Comm communicator);
+
+    /**
+     * @brief Check that every displacement component is held: by a face
+     * condition near the material, or by what @p held_elsewhere says holds
+     * it (the scene's couplings: Coupling::holds_material()).
+     */
+    template <int dim>
+    void
+    check_supports(const Parameters::All<dim>              &parameters,
+                   const std::function<bool(unsigned int)> &held_elsewhere);
 
   } // namespace SceneChecks
 } // namespace impm
