@@ -34,6 +34,15 @@ namespace impm
 
 
   template <int dim>
+  bool
+  Coupling<dim>::holds_material(const unsigned int) const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
   void
   Coupling<dim>::check_start(const MaterialPoints<dim> &) const
   {}

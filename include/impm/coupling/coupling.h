@@ -161,6 +161,12 @@ namespace impm
     virtual unsigned int
     point_state_entries() const;
 
+    /** @brief Whether it may hold the material in displacement component
+     *  @p component, so that no face condition needs to (a floor, springs):
+     *  SceneChecks::check_supports(). False by default. */
+    virtual bool
+    holds_material(const unsigned int component) const;
+
     /** @brief Check the scene once its points exist, in a run that does
      *  not resume. Collective. */
     virtual void
