@@ -96,6 +96,33 @@ namespace impm
         const BorderedBlock         &border) const;
 
   private:
+    /** @brief Compare the system's column @p column (perturbed by @p
+     *  perturbation) with its central differences. Collective. */
+    template <typename Comparison, typename Evaluate>
+    void
+    check_system_column(const types::global_dof_index column,
+                        const double                  perturbation,
+                        NodalVector                  &increment,
+                        const BorderedBlock          &border,
+                        const Evaluate               &evaluate,
+                        Comparison                   &comparison) const;
+
+    /** @brief Compare global unknown @p j's column with its central
+     *  differences. Collective. */
+    template <typename Comparison, typename Evaluate>
+    void
+    check_global_column(const unsigned int   j,
+                        const double         perturbation,
+                        const BorderedBlock &border,
+                        const Evaluate      &evaluate,
+                        Comparison          &comparison) const;
+
+    /** @brief The result of the comparisons, over all processes.
+     *  Collective. */
+    template <typename Comparison>
+    TangentCheckResult
+    conclude(Comparison &comparison) const;
+
     const BackgroundGrid<dim> &grid;
     const LoadStepSystem<dim> &system;
     Couplings<dim>            &couplings;
