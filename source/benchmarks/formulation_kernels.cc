@@ -126,29 +126,77 @@ namespace
 
 
 
-  template <int dim>
+  /**
+   * @brief Append one row to each table: the per-point times @p ns of the
+   * two statements (form table) and of the stiffness kernels (kernel
+   * table), with the kernels' largest relative difference.
+   */
   void
-  run(const unsigned int nodes_per_direction_low,
-      const unsigned int nodes_per_direction_high,
-      const Material    &material,
-      const double       strain,
-      const std::string &state,
-      const unsigned int n_points,
-      const unsigned int trials,
-      std::mt19937      &random,
-      std::string       &form_table,
-      std::string       &kernel_table)
+  append_rows(const unsigned int         dim,
+              const unsigned int         n_nodes,
+              const std::string         &state,
+              const unsigned int         percent_plastic,
+              const std::vector<double> &ns,
+              const bool                 finite_checksum,
+              const bool                 symmetric,
+              const double               relative_difference,
+              std::string               &form_table,
+              std::string               &kernel_table)
   {
-    // Support: nodes_per_direction_low in the first direction,
-    // nodes_per_direction_high in the others.
-    unsigned int n_nodes = nodes_per_direction_low;
-    for (unsigned int d = 1; d < dim; ++d)
-      n_nodes *= nodes_per_direction_high;
-    const unsigned int n = n_nodes * dim;
+    char line[512];
+    std::snprintf(line,
+                  sizeof(line),
+                  "| %u | %u | %s (%u%% plastic) | %.0f | %.0f | %.0f | %.0f | "
+                  "%.3f |%s\n",
+                  dim,
+                  n_nodes,
+                  state.c_str(),
+                  percent_plastic,
+                  ns[0],
+                  ns[1],
+                  ns[2],
+                  ns[3],
+                  (ns[1] + ns[3]) / (ns[0] + ns[2]),
+                  finite_checksum ? "" : " (non-finite checksum)");
+    form_table += line;
+    std::snprintf(line,
+                  sizeof(line),
+                  "| %u | %u | %s | %.0f | %.0f | %.0f | %.2f | %.0f | %.0f | "
+                  "%.2f | %.1e |\n",
+                  dim,
+                  n_nodes,
+                  state.c_str(),
+                  ns[5],
+                  ns[6],
+                  ns[7],
+                  ns[5] / (symmetric ? ns[7] : ns[6]),
+                  ns[4],
+                  ns[2],
+                  ns[4] / ns[2],
+                  relative_difference);
+    kernel_table += line;
+  }
 
+
+
+  /**
+   * @brief @p n_points synthetic points on a support of @p n_nodes: random
+   * gradients, a random start of strain @p strain and a random increment of
+   * a fifth of it, updated by @p material; @p n_plastic counts the plastic
+   * ones.
+   */
+  template <int dim>
+  std::vector<SyntheticPoint<dim>>
+  make_points(const unsigned int n_nodes,
+              const Material    &material,
+              const double       strain,
+              const unsigned int n_points,
+              std::mt19937      &random,
+              unsigned int      &n_plastic)
+  {
     std::uniform_real_distribution<double> uniform(-1., 1.);
     std::vector<SyntheticPoint<dim>>       points(n_points);
-    unsigned int                           n_plastic = 0;
+    n_plastic = 0;
     for (SyntheticPoint<dim> &point : points)
       {
         for (unsigned int v = 0; v < n_nodes; ++v)
@@ -172,6 +220,34 @@ namespace
                                                               point.dF_inverse,
                                                               1.);
       }
+    return points;
+  }
+
+
+
+  template <int dim>
+  void
+  run(const unsigned int nodes_per_direction_low,
+      const unsigned int nodes_per_direction_high,
+      const Material    &material,
+      const double       strain,
+      const std::string &state,
+      const unsigned int n_points,
+      const unsigned int trials,
+      std::mt19937      &random,
+      std::string       &form_table,
+      std::string       &kernel_table)
+  {
+    // Support: nodes_per_direction_low in the first direction,
+    // nodes_per_direction_high in the others.
+    unsigned int n_nodes = nodes_per_direction_low;
+    for (unsigned int d = 1; d < dim; ++d)
+      n_nodes *= nodes_per_direction_high;
+    const unsigned int n = n_nodes * dim;
+
+    unsigned int                     n_plastic = 0;
+    std::vector<SyntheticPoint<dim>> points =
+      make_points<dim>(n_nodes, material, strain, n_points, random, n_plastic);
 
     std::vector<double>        forces(n), matrix(n * n);
     std::vector<unsigned char> rows_needed(n, 1);
@@ -286,38 +362,16 @@ namespace
         }
     checksum += stiffness->entry(1, n - 1);
 
-    char line[512];
-    std::snprintf(line,
-                  sizeof(line),
-                  "| %u | %u | %s (%u%% plastic) | %.0f | %.0f | %.0f | %.0f | "
-                  "%.3f |%s\n",
-                  dim,
-                  n_nodes,
-                  state.c_str(),
-                  100 * n_plastic / n_points,
-                  ns[0],
-                  ns[1],
-                  ns[2],
-                  ns[3],
-                  (ns[1] + ns[3]) / (ns[0] + ns[2]),
-                  std::isfinite(checksum) ? "" : " (non-finite checksum)");
-    form_table += line;
-    std::snprintf(line,
-                  sizeof(line),
-                  "| %u | %u | %s | %.0f | %.0f | %.0f | %.2f | %.0f | %.0f | "
-                  "%.2f | %.1e |\n",
-                  dim,
-                  n_nodes,
-                  state.c_str(),
-                  ns[5],
-                  ns[6],
-                  ns[7],
-                  ns[5] / (symmetry == TangentSymmetry::major ? ns[7] : ns[6]),
-                  ns[4],
-                  ns[2],
-                  ns[4] / ns[2],
-                  difference / largest);
-    kernel_table += line;
+    append_rows(dim,
+                n_nodes,
+                state,
+                100 * n_plastic / n_points,
+                ns,
+                std::isfinite(checksum),
+                symmetry == TangentSymmetry::major,
+                difference / largest,
+                form_table,
+                kernel_table);
   }
 } // namespace
 

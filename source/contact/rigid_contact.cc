@@ -547,72 +547,7 @@ namespace impm
 
 
 
-  template <int dim>
-  RigidContact<dim>::RigidContact(const CouplingInputs<dim> &inputs)
-    : RigidContact(inputs.parameters.rigid_bodies, inputs.grid)
-  {}
-
-
-
-  template <int dim>
-  unsigned int
-  RigidContact<dim>::point_state_entries() const
-  {
-    return n_traction_entries;
-  }
-
-
-
-  template <int dim>
-  void
-  RigidContact<dim>::begin_attempt(const MaterialPoints<dim> &material_points,
-                                   const LoadStepSystem<dim> &system,
-                                   const double               start,
-                                   const double               target)
-  {
-    begin(material_points, system, start, target);
-  }
-
-
-
-  template <int dim>
-  bool
-  RigidContact<dim>::add_matrix(const PointGradients<dim> &,
-                                const LoadStepSystem<dim>      &system,
-                                TrilinosWrappers::SparseMatrix &matrix)
-  {
-    add_contact_matrix(system, matrix);
-    return true;
-  }
-
-
-
-  template <int dim>
-  bool
-  RigidContact<dim>::holds_material(const unsigned int) const
-  {
-    return true;
-  }
-
-
-
-  template <int dim>
-  Tensor<1, dim>
-  RigidContact<dim>::force_from_material() const
-  {
-    Tensor<1, dim> force;
-    for (const BodyForce &body_force : forces_on_bodies)
-      force += body_force.total;
-    return force;
-  }
-
-
-
   template class RigidContact<2>;
   template class RigidContact<3>;
 
-  IMPM_REGISTER_COUPLING(RigidContact,
-                         "Rigid contact",
-                         !inputs.parameters.rigid_bodies.empty(),
-                         nullptr)
 } // namespace impm

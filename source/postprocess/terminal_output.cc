@@ -86,6 +86,13 @@ namespace impm
                 const RunStatistics<dim> &statistics,
                 const double              column_deviation) const;
 
+      /** Print the final force on each rigid body (scenes with rigid
+       *  bodies), in the scales @p force and @p length. */
+      void
+      print_rigid_bodies(const RunContext<dim> &context,
+                         const double           force,
+                         const double           length) const;
+
       /** Print one line per point. */
       void
       print_points(const RunContext<dim>          &context,
@@ -157,6 +164,59 @@ namespace impm
 
     template <int dim>
     void
+    TerminalOutput<dim>::print_rigid_bodies(const RunContext<dim> &context,
+                                            const double           force,
+                                            const double           length) const
+    {
+      const RigidContact<dim> *contact =
+        context.couplings.template find<RigidContact<dim>>();
+      if (contact == nullptr)
+        return;
+      char buffer[160];
+      for (unsigned int k = 0; k < contact->bodies().size(); ++k)
+        {
+          const auto &body_force = contact->body_forces()[k];
+          std::cout << "final force on " << contact->bodies()[k].name << ":";
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              std::snprintf(buffer,
+                            sizeof(buffer),
+                            " %s %.6f",
+                            Names::axes[d],
+                            body_force.total[d] / force);
+              std::cout << buffer;
+            }
+          std::snprintf(buffer,
+                        sizeof(buffer),
+                        ", normal part %.6f, friction part %.6f, %u probes "
+                        "in contact, %u slipping\n",
+                        body_force.normal.norm() / force,
+                        body_force.tangential.norm() / force,
+                        body_force.n_contacts,
+                        body_force.n_slipping);
+          std::cout << buffer;
+          const auto &body = contact->bodies()[k];
+          if (body.force_components.empty())
+            continue;
+          std::cout << "final displacement of " << body.name
+                    << " (force-driven):";
+          for (const unsigned int d : body.force_components)
+            {
+              std::snprintf(buffer,
+                            sizeof(buffer),
+                            " %s %.6f",
+                            Names::axes[d],
+                            contact->pushed_displacement(k)[d] / length);
+              std::cout << buffer;
+            }
+          std::cout << '\n';
+        }
+    }
+
+
+
+    template <int dim>
+    void
     TerminalOutput<dim>::print_run(const RunContext<dim>    &context,
                                    const RunStatistics<dim> &statistics,
                                    const double column_deviation) const
@@ -221,8 +281,14 @@ namespace impm
                     context.material_points.initial_mass());
       std::cout << buffer;
       const auto &reaction_columns = context.grid.reaction_columns();
-      if ((!reaction_columns.empty() ||
-           context.couplings.template find<RigidContact<dim>>() != nullptr) &&
+      // The load is carried by the faces' reactions or by couplings that
+      // hold the material (rigid bodies, springs).
+      bool carried_by_couplings = false;
+      for (const auto &coupling : context.couplings.list())
+        for (unsigned int d = 0; d < dim; ++d)
+          carried_by_couplings =
+            carried_by_couplings || coupling->holds_material(d);
+      if ((!reaction_columns.empty() || carried_by_couplings) &&
           context.has_force_effects)
         std::cout << "reactions balance the load to 1e-8 in every step: "
                   << (statistics.max_reaction_imbalance < 1e-8 ? "yes" : "NO")
@@ -284,59 +350,7 @@ namespace impm
                         statistics.last_reactions[c] / force);
           std::cout << buffer;
         }
-      if (context.couplings.template find<RigidContact<dim>>() != nullptr)
-        for (unsigned int k = 0;
-             k < context.couplings.template find<RigidContact<dim>>()
-                   ->bodies()
-                   .size();
-             ++k)
-          {
-            const auto &body_force =
-              context.couplings.template find<RigidContact<dim>>()
-                ->body_forces()[k];
-            std::cout << "final force on "
-                      << context.couplings.template find<RigidContact<dim>>()
-                           ->bodies()[k]
-                           .name
-                      << ":";
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                std::snprintf(buffer,
-                              sizeof(buffer),
-                              " %s %.6f",
-                              Names::axes[d],
-                              body_force.total[d] / force);
-                std::cout << buffer;
-              }
-            std::snprintf(buffer,
-                          sizeof(buffer),
-                          ", normal part %.6f, friction part %.6f, %u probes "
-                          "in contact, %u slipping\n",
-                          body_force.normal.norm() / force,
-                          body_force.tangential.norm() / force,
-                          body_force.n_contacts,
-                          body_force.n_slipping);
-            std::cout << buffer;
-            const auto &body =
-              context.couplings.template find<RigidContact<dim>>()->bodies()[k];
-            if (body.force_components.empty())
-              continue;
-            std::cout << "final displacement of " << body.name
-                      << " (force-driven):";
-            for (const unsigned int d : body.force_components)
-              {
-                std::snprintf(buffer,
-                              sizeof(buffer),
-                              " %s %.6f",
-                              Names::axes[d],
-                              context.couplings
-                                  .template find<RigidContact<dim>>()
-                                  ->pushed_displacement(k)[d] /
-                                length);
-                std::cout << buffer;
-              }
-            std::cout << '\n';
-          }
+      print_rigid_bodies(context, force, length);
     }
 
 

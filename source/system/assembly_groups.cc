@@ -24,6 +24,143 @@ namespace impm
 
 
 
+    /** A box of grid nodes: its lowest and highest node per direction. */
+    template <int dim>
+    using NodeBox =
+      std::pair<std::array<unsigned int, dim>, std::array<unsigned int, dim>>;
+
+    /** A key of @p box: its lowest node and its widths. */
+    template <int dim>
+    std::uint64_t
+    node_box_key(const CartesianGrid<dim> &cartesian, const NodeBox<dim> &box)
+    {
+      std::uint64_t key = cartesian.node_index(box.first);
+      for (unsigned int d = 0; d < dim; ++d)
+        key = 3 * key + (box.second[d] - box.first[d]);
+      return key;
+    }
+
+
+
+    /**
+     * Order the points by support, largest first (ties by index), into @p
+     * order, and cut the order into runs of one support.
+     */
+    template <int dim>
+    std::vector<SupportRun>
+    support_runs(const std::vector<PointStep<dim>> &point_steps,
+                 std::vector<unsigned int>         &order)
+    {
+      order.resize(point_steps.size());
+      std::iota(order.begin(), order.end(), 0u);
+      const auto same_support = [&](const unsigned int a,
+                                    const unsigned int b) {
+        const PointStep<dim> &x = point_steps[a], &y = point_steps[b];
+        return x.support.n_nodes == y.support.n_nodes &&
+               std::equal(x.dofs.begin(),
+                          x.dofs.begin() + x.support.n_nodes * dim,
+                          y.dofs.begin());
+      };
+      std::sort(order.begin(),
+                order.end(),
+                [&](const unsigned int a, const unsigned int b) {
+                  const PointStep<dim> &x = point_steps[a], &y = point_steps[b];
+                  if (x.support.n_nodes != y.support.n_nodes)
+                    return x.support.n_nodes > y.support.n_nodes;
+                  const unsigned int n = x.support.n_nodes * dim;
+                  for (unsigned int k = 0; k < n; ++k)
+                    if (x.dofs[k] != y.dofs[k])
+                      return x.dofs[k] < y.dofs[k];
+                  return a < b;
+                });
+      std::vector<SupportRun> runs;
+      for (unsigned int first = 0; first < order.size();)
+        {
+          unsigned int last = first + 1;
+          while (last < order.size() && same_support(order[first], order[last]))
+            ++last;
+          const unsigned int run = runs.size();
+          runs.push_back({first, last, run});
+          first = last;
+        }
+      return runs;
+    }
+
+
+
+    /**
+     * The run whose box is the largest box of at most 3 nodes per direction
+     * that holds run @p r's box (@p r itself if none), following the runs
+     * already joined (runs come largest first).
+     */
+    template <int dim>
+    unsigned int
+    largest_container(
+      const unsigned int                                         r,
+      const std::vector<NodeBox<dim>>                           &boxes,
+      const std::vector<std::pair<std::uint64_t, unsigned int>> &run_of_box,
+      const std::vector<SupportRun>                             &runs,
+      const std::vector<PointStep<dim>>                         &point_steps,
+      const std::vector<unsigned int>                           &order,
+      const CartesianGrid<dim>                                  &cartesian)
+    {
+      using Box          = NodeBox<dim>;
+      const auto box_key = [&](const Box &box) {
+        return node_box_key<dim>(cartesian, box);
+      };
+      // The boxes of up to 3 nodes per direction that hold this one:
+      // per direction, the lowest node may go down and the highest up,
+      // to a width of at most 3 (each combination of these widenings).
+      unsigned int best = r,
+                   best_nodes =
+                     point_steps[order[runs[r].first]].support.n_nodes;
+      // (At most 6 per direction: a box of one node widened by 0 to 2.)
+      std::array<std::array<std::pair<unsigned int, unsigned int>, 6>, dim>
+                                    widenings;
+      std::array<unsigned int, dim> n_widenings;
+      unsigned int                  n_candidates = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const unsigned int width = boxes[r].second[d] - boxes[r].first[d];
+          n_widenings[d]           = 0;
+          for (unsigned int down = 0; down <= 2 - width; ++down)
+            for (unsigned int up = 0; down + up <= 2 - width; ++up)
+              if (boxes[r].first[d] >= down)
+                widenings[d][n_widenings[d]++] = {down, up};
+          n_candidates *= n_widenings[d];
+        }
+      // Candidate 0 widens nothing: the box itself.
+      for (unsigned int code = 1; code < n_candidates; ++code)
+        {
+          Box          candidate = boxes[r];
+          unsigned int c         = code;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const auto [down, up] = widenings[d][c % n_widenings[d]];
+              c /= n_widenings[d];
+              candidate.first[d] -= down;
+              candidate.second[d] += up;
+            }
+          const auto found =
+            std::lower_bound(run_of_box.begin(),
+                             run_of_box.end(),
+                             std::make_pair(box_key(candidate), 0u));
+          if (found == run_of_box.end() || found->first != box_key(candidate))
+            continue;
+          const unsigned int container = runs[found->second].target;
+          const unsigned int nodes =
+            point_steps[order[runs[container].first]].support.n_nodes;
+          if (nodes > best_nodes)
+            {
+              best       = container;
+              best_nodes = nodes;
+            }
+        }
+      return best;
+    }
+
+
+
     /**
      * Add to @p groups the group of the points of the runs @p members of
      * @p runs (of @p order), which share one target.
@@ -94,51 +231,16 @@ namespace impm
     const std::vector<types::global_dof_index> &index_in_system,
     const CartesianGrid<dim>                   &cartesian)
   {
-    // Order the points by support, largest first (ties by index), then cut
-    // the order into runs of one support.
-    std::vector<unsigned int> order(point_steps.size());
-    std::iota(order.begin(), order.end(), 0u);
-    const auto same_support = [&](const unsigned int a, const unsigned int b) {
-      const PointStep<dim> &x = point_steps[a], &y = point_steps[b];
-      return x.support.n_nodes == y.support.n_nodes &&
-             std::equal(x.dofs.begin(),
-                        x.dofs.begin() + x.support.n_nodes * dim,
-                        y.dofs.begin());
-    };
-    std::sort(order.begin(),
-              order.end(),
-              [&](const unsigned int a, const unsigned int b) {
-                const PointStep<dim> &x = point_steps[a], &y = point_steps[b];
-                if (x.support.n_nodes != y.support.n_nodes)
-                  return x.support.n_nodes > y.support.n_nodes;
-                const unsigned int n = x.support.n_nodes * dim;
-                for (unsigned int k = 0; k < n; ++k)
-                  if (x.dofs[k] != y.dofs[k])
-                    return x.dofs[k] < y.dofs[k];
-                return a < b;
-              });
-    std::vector<SupportRun> runs;
-    for (unsigned int first = 0; first < order.size();)
-      {
-        unsigned int last = first + 1;
-        while (last < order.size() && same_support(order[first], order[last]))
-          ++last;
-        const unsigned int run = runs.size();
-        runs.push_back({first, last, run});
-        first = last;
-      }
+    std::vector<unsigned int> order;
+    std::vector<SupportRun>   runs = support_runs(point_steps, order);
 
     // A support is a box of nodes (a GIMP point's spans at most 3 per
     // direction). A run whose box lies in the box of a larger run joins
     // it: its points' stiffness is added to that block, the missing nodes
     // as zero gradients.
-    using Box          = std::pair<std::array<unsigned int, dim>,
-                          std::array<unsigned int, dim>>; // lowest, highest
+    using Box          = NodeBox<dim>;
     const auto box_key = [&](const Box &box) {
-      std::uint64_t key = cartesian.node_index(box.first);
-      for (unsigned int d = 0; d < dim; ++d)
-        key = 3 * key + (box.second[d] - box.first[d]);
-      return key;
+      return node_box_key<dim>(cartesian, box);
     };
     std::vector<Box>                                    boxes(runs.size());
     std::vector<std::pair<std::uint64_t, unsigned int>> run_of_box;
@@ -179,55 +281,8 @@ namespace impm
       {
         if (!is_box[r])
           continue;
-        // The boxes of up to 3 nodes per direction that hold this one:
-        // per direction, the lowest node may go down and the highest up,
-        // to a width of at most 3 (each combination of these widenings).
-        unsigned int best = r,
-                     best_nodes =
-                       point_steps[order[runs[r].first]].support.n_nodes;
-        // (At most 6 per direction: a box of one node widened by 0 to 2.)
-        std::array<std::array<std::pair<unsigned int, unsigned int>, 6>, dim>
-                                      widenings;
-        std::array<unsigned int, dim> n_widenings;
-        unsigned int                  n_candidates = 1;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const unsigned int width = boxes[r].second[d] - boxes[r].first[d];
-            n_widenings[d]           = 0;
-            for (unsigned int down = 0; down <= 2 - width; ++down)
-              for (unsigned int up = 0; down + up <= 2 - width; ++up)
-                if (boxes[r].first[d] >= down)
-                  widenings[d][n_widenings[d]++] = {down, up};
-            n_candidates *= n_widenings[d];
-          }
-        // Candidate 0 widens nothing: the box itself.
-        for (unsigned int code = 1; code < n_candidates; ++code)
-          {
-            Box          candidate = boxes[r];
-            unsigned int c         = code;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const auto [down, up] = widenings[d][c % n_widenings[d]];
-                c /= n_widenings[d];
-                candidate.first[d] -= down;
-                candidate.second[d] += up;
-              }
-            const auto found =
-              std::lower_bound(run_of_box.begin(),
-                               run_of_box.end(),
-                               std::make_pair(box_key(candidate), 0u));
-            if (found == run_of_box.end() || found->first != box_key(candidate))
-              continue;
-            const unsigned int container = runs[found->second].target;
-            const unsigned int nodes =
-              point_steps[order[runs[container].first]].support.n_nodes;
-            if (nodes > best_nodes)
-              {
-                best       = container;
-                best_nodes = nodes;
-              }
-          }
-        runs[r].target = best;
+        runs[r].target = largest_container<dim>(
+          r, boxes, run_of_box, runs, point_steps, order, cartesian);
       }
     // The runs of each group: by target, each target first.
     std::vector<unsigned int> by_target(runs.size());

@@ -221,6 +221,27 @@ namespace impm
     unpack_after_repartition();
 
   private:
+    /**
+     * @brief The initial stress of a point of @p body at @p position into
+     * @p properties: zero, or the body's geostatic stress under gravity @p
+     * g with the elastic strain its material gives it; the first geostatic
+     * stress outside the yield surface is described in @p
+     * outside_yield_surface.
+     */
+    void
+    set_initial_stress(const Body<dim>     &body,
+                       const Point<dim>    &position,
+                       const double         g,
+                       std::vector<double> &properties,
+                       std::string         &outside_yield_surface) const;
+
+    /**
+     * @brief Refuse a body that holds no point (one line naming it), from
+     * each body's points on this process, @p n_local. Collective.
+     */
+    void
+    check_bodies_hold_points(const std::vector<unsigned int> &n_local) const;
+
     /** Weight of a point in a repartition: as much as a cell. */
     static constexpr unsigned int point_weight = 1000;
 

@@ -1,0 +1,94 @@
+// Rigid contact as a coupling (Coupling's functions that are not the
+// contact's own): its creation from the scene, its point state, the start
+// of an attempt, the matrix, the support it gives and its share of the
+// load, and the registration. The probes and forces are in
+// rigid_contact.cc, the bodies' unknowns in rigid_contact_unknowns.cc.
+#include <impm/contact/rigid_contact.h>
+#include <impm/system/load_step_system.h>
+
+namespace impm
+{
+  template <int dim>
+  RigidContact<dim>::RigidContact(const CouplingInputs<dim> &inputs)
+    : RigidContact(inputs.parameters.rigid_bodies, inputs.grid)
+  {}
+
+
+
+  template <int dim>
+  unsigned int
+  RigidContact<dim>::point_state_entries() const
+  {
+    return n_traction_entries;
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::begin_attempt(const MaterialPoints<dim> &material_points,
+                                   const LoadStepSystem<dim> &system,
+                                   const double               start,
+                                   const double               target)
+  {
+    begin(material_points, system, start, target);
+  }
+
+
+
+  template <int dim>
+  bool
+  RigidContact<dim>::add_matrix(const PointGradients<dim> &,
+                                const LoadStepSystem<dim>      &system,
+                                TrilinosWrappers::SparseMatrix &matrix)
+  {
+    add_contact_matrix(system, matrix);
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  RigidContact<dim>::holds_material(const unsigned int) const
+  {
+    return true;
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  RigidContact<dim>::force_from_material() const
+  {
+    Tensor<1, dim> force;
+    for (const BodyForce &body_force : forces_on_bodies)
+      force += body_force.total;
+    return force;
+  }
+
+
+
+#define IMPM_INSTANTIATE(dim)                                                 \
+  template RigidContact<dim>::RigidContact(const CouplingInputs<dim> &);      \
+  template unsigned int RigidContact<dim>::point_state_entries() const;       \
+  template void RigidContact<dim>::begin_attempt(const MaterialPoints<dim> &, \
+                                                 const LoadStepSystem<dim> &, \
+                                                 const double,                \
+                                                 const double);               \
+  template bool RigidContact<dim>::add_matrix(                                \
+    const PointGradients<dim> &,                                              \
+    const LoadStepSystem<dim> &,                                              \
+    TrilinosWrappers::SparseMatrix &);                                        \
+  template bool RigidContact<dim>::holds_material(const unsigned int) const;  \
+  template Tensor<1, dim> RigidContact<dim>::force_from_material() const;
+  IMPM_INSTANTIATE(2)
+  IMPM_INSTANTIATE(3)
+#undef IMPM_INSTANTIATE
+
+
+  IMPM_REGISTER_COUPLING(RigidContact,
+                         "Rigid contact",
+                         !inputs.parameters.rigid_bodies.empty(),
+                         nullptr)
+} // namespace impm
