@@ -10,7 +10,7 @@ revision=${1:-}
 files="include/impm/solver/load_step_problem.h source/solver/load_step_problem.cc
 include/impm/system/load_step_system.h source/system/load_step_system.cc
 include/impm/assembly/assembler.h source/assembly/assembler.cc
-include/impm/core/mpm_solver.h source/core/mpm_solver.cc"
+include/impm/simulator/mpm_solver.h source/simulator/mpm_solver.cc"
 names='f_bar|FBar|rigid_contact|RigidContact|ghost_stabilisation|GhostStabilisation|has_unknowns|pressure|with_pressures|rigid_bodies|spring|Spring'
 total=0
 for f in $files; do

@@ -8,9 +8,9 @@
 #include <impm/base/errors.h>
 #include <impm/core/default_scene.h>
 #include <impm/core/parameters.h>
-#include <impm/core/run.h>
 #include <impm/coupling/coupling.h>
 #include <impm/io/scene_input.h>
+#include <impm/simulator/run.h>
 
 #include <csignal>
 #include <cstdlib>

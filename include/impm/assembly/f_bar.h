@@ -11,7 +11,7 @@
 #include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
-#include <impm/system/point_step.h>
+#include <impm/points/point_step.h>
 
 #include <algorithm>
 #include <functional>

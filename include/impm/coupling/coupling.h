@@ -15,8 +15,8 @@
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
+#include <impm/points/point_step.h>
 #include <impm/system/load_step_system.h>
-#include <impm/system/point_step.h>
 
 #include <functional>
 #include <memory>

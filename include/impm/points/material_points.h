@@ -10,7 +10,7 @@
 #include <impm/core/point_properties.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
-#include <impm/system/point_step.h>
+#include <impm/points/point_step.h>
 
 #include <cstdint>
 #include <utility>

@@ -4,7 +4,7 @@
 #include <deal.II/base/types.h>
 
 #include <impm/basis/basis_functions.h>
-#include <impm/system/point_step.h>
+#include <impm/points/point_step.h>
 
 #include <vector>
 

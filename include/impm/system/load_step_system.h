@@ -9,11 +9,11 @@
 
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
-#include <impm/solver/near_null_space.h>
+#include <impm/points/point_step.h>
 #include <impm/system/assembly_groups.h>
 #include <impm/system/kept_entries.h>
+#include <impm/system/near_null_space.h>
 #include <impm/system/off_process_rows.h>
-#include <impm/system/point_step.h>
 
 #include <cstdint>
 #include <vector>

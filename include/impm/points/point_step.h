@@ -1,5 +1,5 @@
-#ifndef impm_system_point_step_h
-#define impm_system_point_step_h
+#ifndef impm_points_point_step_h
+#define impm_points_point_step_h
 
 #include <deal.II/base/tensor.h>
 

@@ -1,5 +1,5 @@
-#ifndef impm_solver_near_null_space_h
-#define impm_solver_near_null_space_h
+#ifndef impm_system_near_null_space_h
+#define impm_system_near_null_space_h
 
 #include <vector>
 

@@ -1,5 +1,5 @@
-#ifndef impm_core_mpm_solver_h
-#define impm_core_mpm_solver_h
+#ifndef impm_simulator_mpm_solver_h
+#define impm_simulator_mpm_solver_h
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>

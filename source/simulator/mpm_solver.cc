@@ -1,11 +1,11 @@
 #include <deal.II/base/utilities.h>
 
 #include <impm/base/errors.h>
-#include <impm/core/mpm_solver.h>
-#include <impm/core/run.h>
 #include <impm/core/scene_checks.h>
 #include <impm/io/checkpoint.h>
 #include <impm/io/output_directory.h>
+#include <impm/simulator/mpm_solver.h>
+#include <impm/simulator/run.h>
 
 #include <csignal>
 #include <filesystem>

@@ -1,5 +1,5 @@
-#ifndef impm_core_run_h
-#define impm_core_run_h
+#ifndef impm_simulator_run_h
+#define impm_simulator_run_h
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
