@@ -3,7 +3,8 @@
 # for each run the wall time, Newton iterations, linear iterations and the
 # phases; then per build and process count the medians, the old/new ratio
 # and the speed-up of 2 processes over 1. Extra arguments are passed to impm
-# (e.g. --set "Grid/Number of cells=64, 32").
+# (e.g. --set "Grid/Number of cells=64, 32"). Then the medians per phase
+# (above 0.01 s) and their old/new ratio.
 # Usage: scripts/compare_builds.sh OLD_IMPM NEW_IMPM SCENE REPETITIONS [ARGS...]
 set -eu
 old=$1
@@ -53,4 +54,18 @@ for p in (1, 2):
 for b in ("old", "new"):
     print("%s: speed-up of 2 processes over 1: %.2f"
           % (b, median[(b, 1)] / median[(b, 2)]))
+# Per phase: the medians of each build and their ratio.
+phases = {}
+for line in open(sys.argv[1]):
+    build, processes, wall, newton, linear, times = line.strip().split("|")
+    for entry in times.split():
+        name, value = entry.rsplit("=", 1)
+        phases.setdefault((name, int(processes)), {}).setdefault(
+            build, []).append(float(value))
+for (name, p), builds in sorted(phases.items()):
+    old = statistics.median(builds.get("old", [0.]))
+    new = statistics.median(builds.get("new", [0.]))
+    if old > 0.01 or new > 0.01:
+        print("  %d process(es) %-18s old %7.2f s  new %7.2f s  old/new %s"
+              % (p, name, old, new, "%.3f" % (old / new) if new > 0 else "-"))
 PY
