@@ -68,7 +68,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <impm/contact/rigid_body.h>
+#include <impm/core/rigid_body.h>
 
 #include <cstdint>
 #include <fstream>

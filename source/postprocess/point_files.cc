@@ -1,8 +1,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <impm/base/names.h>
-#include <impm/contact/rigid_body.h>
 #include <impm/contact/rigid_contact.h>
+#include <impm/core/rigid_body.h>
 #include <impm/io/atomic_file.h>
 #include <impm/io/point_output.h>
 #include <impm/postprocess/postprocessor.h>

@@ -8,7 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <impm/contact/rigid_body.h>
+#include <impm/core/rigid_body.h>
 #include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>

@@ -5,8 +5,8 @@
 #include <deal.II/base/point.h>
 
 #include <impm/basis/basis_functions.h>
-#include <impm/contact/rigid_body.h>
 #include <impm/core/body.h>
+#include <impm/core/rigid_body.h>
 
 #include <array>
 #include <string>

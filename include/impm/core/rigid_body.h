@@ -1,12 +1,12 @@
-#ifndef impm_contact_rigid_body_h
-#define impm_contact_rigid_body_h
+#ifndef impm_core_rigid_body_h
+#define impm_core_rigid_body_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <impm/contact/triangulated_surface.h>
 #include <impm/core/body.h>
+#include <impm/core/triangulated_surface.h>
 
 #include <algorithm>
 #include <limits>

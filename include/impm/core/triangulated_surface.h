@@ -1,5 +1,5 @@
-#ifndef impm_contact_triangulated_surface_h
-#define impm_contact_triangulated_surface_h
+#ifndef impm_core_triangulated_surface_h
+#define impm_core_triangulated_surface_h
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>

@@ -1,6 +1,6 @@
 #include <impm/base/names.h>
-#include <impm/contact/rigid_body.h>
 #include <impm/core/parameters.h>
+#include <impm/core/rigid_body.h>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // parameters and the description are in rigid_body.cc.
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <impm/contact/rigid_body.h>
+#include <impm/core/rigid_body.h>
 
 #include <algorithm>
 #include <cmath>

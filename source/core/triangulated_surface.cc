@@ -1,6 +1,6 @@
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <impm/contact/triangulated_surface.h>
+#include <impm/core/triangulated_surface.h>
 
 #include <algorithm>
 #include <cmath>
