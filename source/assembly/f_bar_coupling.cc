@@ -172,11 +172,11 @@ namespace impm
   template unsigned int FBar<dim>::prepare(const MaterialPoints<dim> &,        \
                                            const LoadStepSystem<dim> &,        \
                                            const std::vector<bool> &);         \
-  template void FBar<dim>::setup(                                              \
-    const MaterialPoints<dim> &,                                               \
-    const LoadStepSystem<dim> &,                                               \
-    const CouplingRows &,                                                      \
-    std::vector<std::vector<types::global_dof_index>> &);                      \
+  template void         FBar<dim>::setup(                                      \
+    const MaterialPoints<dim> &,                                       \
+    const LoadStepSystem<dim> &,                                       \
+    const CouplingRows &,                                              \
+    std::vector<std::vector<types::global_dof_index>> &);              \
   template void FBar<dim>::begin_attempt(const MaterialPoints<dim> &,          \
                                          const LoadStepSystem<dim> &,          \
                                          const double,                         \
@@ -193,7 +193,7 @@ namespace impm
     const TrilinosWrappers::MPI::Vector &);                                    \
   template double FBar<dim>::perturb_row(const types::global_dof_index,        \
                                          const double);                        \
-  template bool FBar<dim>::needs_direct_solver() const;                        \
+  template bool   FBar<dim>::needs_direct_solver() const;                      \
   template std::vector<std::string> FBar<dim>::notes(                          \
     const Parameters::Solver &) const;                                         \
   template std::vector<std::string> FBar<dim>::descriptions() const;

@@ -1,0 +1,102 @@
+// The seeding's helpers of MaterialPoints: a point's initial stress (zero
+// or geostatic, checked inside the yield surface) and the check that every
+// body holds points. The seeding itself is in material_points.cc.
+#include <deal.II/base/mpi.h>
+
+#include <impm/base/errors.h>
+#include <impm/points/material_points.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace impm
+{
+  template <int dim>
+  void
+  MaterialPoints<dim>::set_initial_stress(
+    const Body<dim>     &body,
+    const Point<dim>    &position,
+    const double         g,
+    std::vector<double> &properties,
+    std::string         &outside_yield_surface) const
+  {
+    if (body.initial_stress.geostatic)
+      {
+        const MutablePointState<dim> state{ArrayView<double>(properties)};
+        const SymmetricTensor<2, 3> stress = body.geostatic_stress(position, g);
+        const SymmetricTensor<2, 3> elastic_strain =
+          body.material->elastic_strain_for_stress(stress);
+        state.set_kirchhoff_stress(stress);
+        state.set_elastic_left_cauchy_green(elastic_strain);
+        // The start must lie inside the yield surface.
+        ConstitutiveUpdate start;
+        body.material->update(unit_symmetric_tensor<3>(),
+                              elastic_strain,
+                              start);
+        if (start.plastic && outside_yield_surface.empty())
+          {
+            std::ostringstream message;
+            message << body.name << ": the geostatic stress with K0 = "
+                    << body.initial_stress.k0 << " lies outside the "
+                    << "yield surface of its material at (" << position << "), "
+                    << body.initial_stress.surface_level - position[dim - 1]
+                    << " m deep (" << body.material->description()
+                    << "); choose a K0 nearer 1 or a stronger "
+                       "material.";
+            outside_yield_surface = message.str();
+          }
+      }
+    else
+      {
+        const MutablePointState<dim> state{ArrayView<double>(properties)};
+        state.set_kirchhoff_stress(SymmetricTensor<2, 3>());
+        state.set_elastic_left_cauchy_green(unit_symmetric_tensor<3>());
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  MaterialPoints<dim>::check_bodies_hold_points(
+    const std::vector<unsigned int> &n_local) const
+  {
+    std::vector<unsigned int> points_of_body(n_local);
+    Utilities::MPI::sum(n_local, communicator, points_of_body);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (points_of_body[b] == 0)
+        {
+          const auto         box = bodies[b].bounding_box();
+          std::ostringstream message;
+          message << bodies[b].name << " ([" << box.first << "] - ["
+                  << box.second << "]) holds no material point: none of its ";
+          for (unsigned int d = 0; d < dim; ++d)
+            message << (d ? " x " : "") << bodies[b].points_per_direction;
+          message << " point positions per cell lies inside it; enlarge it "
+                     "or raise its 'Points per cell direction'.";
+          throw InputError(message.str());
+        }
+  }
+
+
+
+  template void
+  MaterialPoints<2>::set_initial_stress(const Body<2> &,
+                                        const Point<2> &,
+                                        const double,
+                                        std::vector<double> &,
+                                        std::string &) const;
+  template void
+  MaterialPoints<3>::set_initial_stress(const Body<3> &,
+                                        const Point<3> &,
+                                        const double,
+                                        std::vector<double> &,
+                                        std::string &) const;
+  template void
+  MaterialPoints<2>::check_bodies_hold_points(
+    const std::vector<unsigned int> &) const;
+  template void
+  MaterialPoints<3>::check_bodies_hold_points(
+    const std::vector<unsigned int> &) const;
+} // namespace impm
