@@ -218,6 +218,15 @@ expect resume_without_checkpoint "--resume: the output directory 'results' holds
 expect stop_after_zero_steps "--stop-after-step '0': expected a number of load steps from 1 to 1e9" - -- "$base" --stop-after-step 0
 expect two_scene_files "Only one scene file may be given" - -- "$base" "$base"
 
+# Declared point state: a field no point stores; a checkpoint resumed into
+# points laid out otherwise (the plastic model's state, then an elastic
+# model without it).
+expect unknown_point_field "Output/Fields names 'plastic_multipler', which this scene's points do not store; its fields are displacement, .*, plastic_multiplier\\." - -- "$base" --set "Output/Interval=1" --set "Output/Fields=stress, plastic_multipler"
+mkdir -p "$work/case_resume_other_layout" && (cd "$work/case_resume_other_layout" &&
+  "$impm" "$base" --set "Checkpoint/Interval=1" --stop-after-step 1 > first.txt 2>&1) ||
+  fail "the run that writes the checkpoint failed"
+expect resume_other_layout "The checkpoint's material points store 3[0-9] properties; body 1: plastic_multiplier\\(1\\), this scene's 2[0-9] properties: resume with the scene" also_parallel -- "$base" --set "Body 1/Material/Model=Hencky elastic" --resume
+
 # The output directory.
 mkdir -p "$work/case_directory_of_another_run/other" && printf 'scene = another\nscene file = /elsewhere/another.prm\n' > "$work/case_directory_of_another_run/other/impm-run.txt"
 with other_run.prm "s/set Output directory = results/set Output directory = other/"

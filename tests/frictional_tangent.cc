@@ -16,6 +16,7 @@
 #include <impm/mechanics/mohr_coulomb.h>
 #include <impm/mechanics/pulled_back_stress.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 
@@ -71,9 +72,10 @@ namespace
                              0.002 * shear * std::sin(1. + 3. * i + 1.7 * j));
 
     const auto P_of = [&](const Tensor<2, dim> &F, ConstitutiveUpdate &u) {
+      const std::array<double, 1> state = {{hardening_variable}};
       material.update(PulledBackStress<dim>::embed(F),
                       be_n,
-                      hardening_variable,
+                      ArrayView<const double>(state.data(), state.size()),
                       u);
       return PulledBackStress<dim>::stress(u.kirchhoff_stress, invert(F), Jn);
     };

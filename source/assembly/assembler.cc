@@ -32,10 +32,7 @@ namespace impm
   bool
   Assembler<dim>::update_stresses(const NodalVector &increment)
   {
-    unsigned int       p          = 0;
-    bool               admissible = true;
-    const unsigned int hardening_index =
-      material_points.layout().plastic_multiplier;
+    bool admissible = true;
     // The return map of one point (once its increment is known); false
     // if it failed.
     const auto update_point = [&](PointStep<dim>                &step,
@@ -48,9 +45,7 @@ namespace impm
           step.material->update(
             PulledBackStress<dim>::embed(step.deformation_increment),
             PointState<dim>(properties).elastic_left_cauchy_green(),
-            hardening_index == PointLayout::absent ?
-              0. :
-              properties[hardening_index],
+            material_points.material_state(properties),
             step.update);
           return true;
         }
@@ -60,16 +55,18 @@ namespace impm
           return false;
         }
     };
+    auto                                &point_steps = system.point_steps;
     std::vector<ArrayView<const double>> point_properties;
     if (volume_coupling != nullptr)
-      point_properties.reserve(system.point_steps.size());
+      point_properties.resize(point_steps.size());
     for (const auto &point : material_points.particles())
       {
+        PointStep<dim> &step = point_steps.of(point);
         if (volume_coupling != nullptr)
-          point_properties.push_back(point.get_properties());
-        PointStep<dim> &step = system.point_steps[p++];
-        const auto     &s    = step.support;
-        Tensor<2, dim>  dF   = unit_symmetric_tensor<dim>();
+          point_properties[point_steps.index_of(point)] =
+            point.get_properties();
+        const auto    &s  = step.support;
+        Tensor<2, dim> dF = unit_symmetric_tensor<dim>();
         for (unsigned int v = 0; v < s.n_nodes; ++v)
           for (unsigned int i = 0; i < dim; ++i)
             {
@@ -96,8 +93,8 @@ namespace impm
     if (volume_coupling != nullptr &&
         Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1)
       admissible = volume_coupling->update_stresses(
-        system.point_steps, [&](const unsigned int q) {
-          return update_point(system.point_steps[q], point_properties[q]);
+        point_steps, [&](const unsigned int q) {
+          return update_point(point_steps[q], point_properties[q]);
         });
     return Utilities::MPI::min(admissible ? 1 : 0, communicator) == 1;
   }
@@ -112,7 +109,7 @@ namespace impm
     external_force = 0.;
     if (!force_effects.empty())
       {
-        const auto                  infos = material_points.infos();
+        const auto infos = material_points.infos(system.point_steps);
         std::vector<Tensor<1, dim>> forces(infos.size());
         std::vector<FaceForce<dim>> face_forces;
         for (const auto &effect : force_effects)
@@ -131,12 +128,12 @@ namespace impm
         if (!face_forces.empty())
           {
             // The start-of-step positions and domains of the points.
-            std::vector<std::pair<Point<dim>, Tensor<1, dim>>> domains;
-            domains.reserve(infos.size());
+            std::vector<std::pair<Point<dim>, Tensor<1, dim>>> domains(
+              infos.size());
             for (const auto &point : material_points.particles())
-              domains.emplace_back(
+              domains[system.point_steps.index_of(point)] = {
                 point.get_location(),
-                PointState<dim>(point.get_properties()).domain_half_length());
+                PointState<dim>(point.get_properties()).domain_half_length()};
             std::array<double, PointSupport<dim>::max_nodes> weights;
             for (const auto &face : face_forces)
               {

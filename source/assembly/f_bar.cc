@@ -90,14 +90,12 @@ namespace impm
     dilatation_stress.resize(n_points);
     patch_volume.resize(n_patches);
     std::vector<double> start_volume(n_points);
-    {
-      unsigned int p = 0;
-      for (const auto &point : material_points.particles())
-        {
-          const PointState<dim> state(point.get_properties());
-          start_volume[p++] = state.jacobian() * state.initial_volume();
-        }
-    }
+    for (const auto &point : material_points.particles())
+      {
+        const PointState<dim> state(point.get_properties());
+        start_volume[point_steps.index_of(point)] =
+          state.jacobian() * state.initial_volume();
+      }
 
     // Volume shares and the system DoFs each patch touches.
     dof_start.assign(1, 0);
@@ -152,10 +150,10 @@ namespace impm
   template <int dim>
   void
   FBar<dim>::set_up_pressure_unknowns(
-    const MaterialPoints<dim>         &material_points,
-    const std::vector<PointStep<dim>> &point_steps,
-    const types::global_dof_index      first_pressure_index,
-    const IndexSet                    &owned_rows)
+    const MaterialPoints<dim>    &material_points,
+    const PointSteps<dim>        &point_steps,
+    const types::global_dof_index first_pressure_index,
+    const IndexSet               &owned_rows)
   {
     const unsigned int n_patches   = patch_start.size() - 1;
     const unsigned int n_points    = patch_points.size();
@@ -167,18 +165,15 @@ namespace impm
 
     // Each point's mean stress at the start of the step.
     std::vector<double> start_stress(n_points);
-    {
-      unsigned int p = 0;
-      for (const auto &point : material_points.particles())
-        {
-          const auto tau =
-            PointState<dim>(point.get_properties()).kirchhoff_stress();
-          double sum = 0.;
-          for (unsigned int i = 0; i < dim; ++i)
-            sum += tau[i][i];
-          start_stress[p++] = sum / dim;
-        }
-    }
+    for (const auto &point : material_points.particles())
+      {
+        const auto tau =
+          PointState<dim>(point.get_properties()).kirchhoff_stress();
+        double sum = 0.;
+        for (unsigned int i = 0; i < dim; ++i)
+          sum += tau[i][i];
+        start_stress[point_steps.index_of(point)] = sum / dim;
+      }
     log_volume.assign(n_points, 0.);
     point_volume.assign(n_points, 1.);
     bulk_response.assign(n_points, 1.);
@@ -314,7 +309,7 @@ namespace impm
 
   template <int dim>
   void
-  FBar<dim>::average(std::vector<PointStep<dim>> &point_steps)
+  FBar<dim>::average(PointSteps<dim> &point_steps)
   {
     for (unsigned int patch = 0; patch < mean_jacobian.size(); ++patch)
       {
@@ -342,7 +337,7 @@ namespace impm
   template <int dim>
   bool
   FBar<dim>::equalise_pressures(
-    std::vector<PointStep<dim>>             &point_steps,
+    PointSteps<dim>                         &point_steps,
     const std::function<bool(unsigned int)> &update_point)
   {
     // A point's solve: Newton on ln dJ*, its slope k from the model's

@@ -71,7 +71,7 @@ namespace impm
   template <int dim>
   bool
   FBar<dim>::update_stresses(
-    std::vector<PointStep<dim>>             &point_steps,
+    PointSteps<dim>                         &point_steps,
     const std::function<bool(unsigned int)> &update_point)
   {
     if (has_pressure_unknowns())
@@ -167,35 +167,35 @@ namespace impm
 
 
 
-#define IMPM_INSTANTIATE(dim)                                                  \
-  template FBar<dim>::FBar(const CouplingInputs<dim> &);                       \
-  template unsigned int FBar<dim>::prepare(const MaterialPoints<dim> &,        \
-                                           const LoadStepSystem<dim> &,        \
-                                           const std::vector<bool> &);         \
-  template void         FBar<dim>::setup(                                      \
-    const MaterialPoints<dim> &,                                       \
-    const LoadStepSystem<dim> &,                                       \
-    const CouplingRows &,                                              \
-    std::vector<std::vector<types::global_dof_index>> &);              \
-  template void FBar<dim>::begin_attempt(const MaterialPoints<dim> &,          \
-                                         const LoadStepSystem<dim> &,          \
-                                         const double,                         \
-                                         const double);                        \
-  template bool FBar<dim>::sets_point_volumes() const;                         \
-  template bool FBar<dim>::update_stresses(                                    \
-    std::vector<PointStep<dim>> &, const std::function<bool(unsigned int)> &); \
-  template bool FBar<dim>::add_matrix(const PointGradients<dim> &,             \
-                                      const LoadStepSystem<dim> &,             \
-                                      TrilinosWrappers::SparseMatrix &);       \
-  template void FBar<dim>::add_row_residuals(                                  \
-    std::vector<std::pair<types::global_dof_index, double>> &);                \
-  template void FBar<dim>::add_solution(                                       \
-    const TrilinosWrappers::MPI::Vector &);                                    \
-  template double FBar<dim>::perturb_row(const types::global_dof_index,        \
-                                         const double);                        \
-  template bool   FBar<dim>::needs_direct_solver() const;                      \
-  template std::vector<std::string> FBar<dim>::notes(                          \
-    const Parameters::Solver &) const;                                         \
+#define IMPM_INSTANTIATE(dim)                                            \
+  template FBar<dim>::FBar(const CouplingInputs<dim> &);                 \
+  template unsigned int FBar<dim>::prepare(const MaterialPoints<dim> &,  \
+                                           const LoadStepSystem<dim> &,  \
+                                           const std::vector<bool> &);   \
+  template void         FBar<dim>::setup(                                \
+    const MaterialPoints<dim> &,                                 \
+    const LoadStepSystem<dim> &,                                 \
+    const CouplingRows &,                                        \
+    std::vector<std::vector<types::global_dof_index>> &);        \
+  template void FBar<dim>::begin_attempt(const MaterialPoints<dim> &,    \
+                                         const LoadStepSystem<dim> &,    \
+                                         const double,                   \
+                                         const double);                  \
+  template bool FBar<dim>::sets_point_volumes() const;                   \
+  template bool FBar<dim>::update_stresses(                              \
+    PointSteps<dim> &, const std::function<bool(unsigned int)> &);       \
+  template bool FBar<dim>::add_matrix(const PointGradients<dim> &,       \
+                                      const LoadStepSystem<dim> &,       \
+                                      TrilinosWrappers::SparseMatrix &); \
+  template void FBar<dim>::add_row_residuals(                            \
+    std::vector<std::pair<types::global_dof_index, double>> &);          \
+  template void FBar<dim>::add_solution(                                 \
+    const TrilinosWrappers::MPI::Vector &);                              \
+  template double FBar<dim>::perturb_row(const types::global_dof_index,  \
+                                         const double);                  \
+  template bool   FBar<dim>::needs_direct_solver() const;                \
+  template std::vector<std::string> FBar<dim>::notes(                    \
+    const Parameters::Solver &) const;                                   \
   template std::vector<std::string> FBar<dim>::descriptions() const;
   IMPM_INSTANTIATE(2)
   IMPM_INSTANTIATE(3)

@@ -217,11 +217,11 @@ namespace impm
       }
 
     const unsigned int traction_index =
-      material_points.layout().contact_traction;
+      material_points.layout().coupling_field(traction_field);
     probes.clear();
-    unsigned int p = 0;
     for (const auto &point : material_points.particles())
       {
+        const unsigned int    p          = system.point_steps.index_of(point);
         const auto            properties = point.get_properties();
         const PointState<dim> state(properties);
         const Point<dim>      position    = point.get_location();
@@ -305,7 +305,6 @@ namespace impm
                   }
               }
           }
-        ++p;
       }
   }
 
@@ -491,7 +490,8 @@ namespace impm
 
   template <int dim>
   void
-  RigidContact<dim>::accept(MaterialPoints<dim> &material_points)
+  RigidContact<dim>::accept(MaterialPoints<dim>       &material_points,
+                            const LoadStepSystem<dim> &system)
   {
     for (const auto &[body, component] : body_unknowns)
       accepted_unknowns[body][component] = displacement[body][component];
@@ -530,7 +530,9 @@ namespace impm
         force.total      = force.normal + force.tangential;
       }
     if (friction)
-      material_points.set_contact_tractions(tractions);
+      material_points.set_coupling_field(traction_field,
+                                         system.point_steps,
+                                         tractions);
   }
 
 

@@ -16,10 +16,12 @@ namespace impm
 
 
   template <int dim>
-  unsigned int
-  RigidContact<dim>::point_state_entries() const
+  PointFields
+  RigidContact<dim>::point_fields() const
   {
-    return n_traction_entries;
+    if (n_traction_entries == 0)
+      return {};
+    return {{traction_field, n_traction_entries, false}};
   }
 
 
@@ -71,7 +73,7 @@ namespace impm
 
 #define IMPM_INSTANTIATE(dim)                                                 \
   template RigidContact<dim>::RigidContact(const CouplingInputs<dim> &);      \
-  template unsigned int RigidContact<dim>::point_state_entries() const;       \
+  template PointFields RigidContact<dim>::point_fields() const;               \
   template void RigidContact<dim>::begin_attempt(const MaterialPoints<dim> &, \
                                                  const LoadStepSystem<dim> &, \
                                                  const double,                \

@@ -25,10 +25,10 @@ namespace impm
 
 
   template <int dim>
-  unsigned int
-  Coupling<dim>::point_state_entries() const
+  PointFields
+  Coupling<dim>::point_fields() const
   {
-    return 0;
+    return {};
   }
 
 
@@ -105,7 +105,7 @@ namespace impm
 
   template <int dim>
   bool
-  Coupling<dim>::update_stresses(std::vector<PointStep<dim>> &,
+  Coupling<dim>::update_stresses(PointSteps<dim> &,
                                  const std::function<bool(unsigned int)> &)
   {
     throw std::logic_error("Coupling::update_stresses() of a coupling that "
@@ -257,7 +257,7 @@ namespace impm
 
   template <int dim>
   void
-  Coupling<dim>::accept(MaterialPoints<dim> &)
+  Coupling<dim>::accept(MaterialPoints<dim> &, const LoadStepSystem<dim> &)
   {}
 
 
@@ -322,25 +322,19 @@ namespace impm
           }
         couplings.push_back(std::move(coupling));
       }
-    // Couplings with point state store it in one place
-    // (PointLayout::coupling_state) until points declare their state.
-    unsigned int with_state = 0;
-    for (const auto &coupling : couplings)
-      with_state += coupling->point_state_entries() > 0 ? 1 : 0;
-    if (with_state > 1)
-      throw std::logic_error("More than one coupling stores point state.");
   }
 
 
 
   template <int dim>
-  unsigned int
-  Couplings<dim>::point_state_entries() const
+  PointFields
+  Couplings<dim>::point_fields() const
   {
-    unsigned int n = 0;
+    PointFields fields;
     for (const auto &coupling : couplings)
-      n += coupling->point_state_entries();
-    return n;
+      for (const PointField &field : coupling->point_fields())
+        fields.push_back(field);
+    return fields;
   }
 
 

@@ -127,11 +127,11 @@ namespace impm
             selected = true;
           }
         springs.clear();
-        const auto  &areas = boundary.areas();
-        unsigned int p     = 0;
+        const auto &areas = boundary.areas();
         for (const auto &point : material_points.particles())
           {
-            const auto area = areas.find(point.get_id());
+            const unsigned int p    = system.point_steps.index_of(point);
+            const auto         area = areas.find(point.get_id());
             if (area != areas.end())
               for (unsigned int f = 0; f < 2 * dim; ++f)
                 if (area->second[f] != 0.)
@@ -157,7 +157,6 @@ namespace impm
                     spring.start_displacement = spring.displacement;
                     springs.push_back(spring);
                   }
-            ++p;
           }
       }
 
@@ -214,7 +213,7 @@ namespace impm
       /** @brief Keep each face's displacement (on every process: points
        *  move between them) and sum the springs' force. */
       void
-      accept(MaterialPoints<dim> &) override
+      accept(MaterialPoints<dim> &, const LoadStepSystem<dim> &) override
       {
         const MPI_Comm communicator =
           grid.get_triangulation().get_communicator();

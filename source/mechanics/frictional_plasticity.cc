@@ -205,12 +205,30 @@ namespace impm
 
 
 
-  void
-  PrincipalStressPlasticity::update(const Tensor<2, 3>          &dF,
-                                    const SymmetricTensor<2, 3> &be_n,
-                                    const double                 kappa,
-                                    ConstitutiveUpdate          &result) const
+  PointFields
+  PrincipalStressPlasticity::state_fields() const
   {
+    return {{"plastic_multiplier", 1, true}};
+  }
+
+
+
+  void
+  PrincipalStressPlasticity::store_state(const ConstitutiveUpdate &result,
+                                         const ArrayView<double>  &state) const
+  {
+    state[0] += result.plastic_multiplier;
+  }
+
+
+
+  void
+  PrincipalStressPlasticity::update(const Tensor<2, 3>            &dF,
+                                    const SymmetricTensor<2, 3>   &be_n,
+                                    const ArrayView<const double> &state,
+                                    ConstitutiveUpdate            &result) const
+  {
+    const double kappa = state[0];
     decompose_trial_strain(dF, be_n, result);
     result.hardening_variable = kappa;
 

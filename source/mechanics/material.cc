@@ -1,10 +1,13 @@
 #include <impm/base/errors.h>
 #include <impm/mechanics/material.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace impm
 {
@@ -25,6 +28,48 @@ namespace impm
 
 
 
+  unsigned int
+  Material::n_state_entries() const
+  {
+    unsigned int n = 0;
+    for (const PointField &field : state_fields())
+      n += field.n_components;
+    return n;
+  }
+
+
+
+  void
+  Material::initialize_state(const SymmetricTensor<2, 3> &,
+                             const ArrayView<double> &state) const
+  {
+    std::fill(state.begin(), state.end(), 0.);
+  }
+
+
+
+  void
+  Material::update(const Tensor<2, 3>          &deformation_increment,
+                   const SymmetricTensor<2, 3> &previous_elastic_strain,
+                   ConstitutiveUpdate          &result) const
+  {
+    std::vector<double> state(n_state_entries());
+    initialize_state(SymmetricTensor<2, 3>(), make_array_view(state));
+    update(deformation_increment,
+           previous_elastic_strain,
+           make_array_view(std::as_const(state)),
+           result);
+  }
+
+
+
+  void
+  Material::store_state(const ConstitutiveUpdate &,
+                        const ArrayView<double> &) const
+  {}
+
+
+
   HenckyVonMises::HenckyVonMises(const double youngs_modulus,
                                  const double poissons_ratio,
                                  const double yield_stress)
@@ -38,10 +83,30 @@ namespace impm
 
 
 
+  PointFields
+  HenckyVonMises::state_fields() const
+  {
+    if (is_plastic())
+      return {{"plastic_multiplier", 1, true}};
+    return {};
+  }
+
+
+
+  void
+  HenckyVonMises::store_state(const ConstitutiveUpdate &result,
+                              const ArrayView<double>  &state) const
+  {
+    if (state.size() > 0)
+      state[0] += result.plastic_multiplier;
+  }
+
+
+
   void
   HenckyVonMises::update(const Tensor<2, 3>          &dF,
                          const SymmetricTensor<2, 3> &be_n,
-                         const double /*hardening_variable*/,
+                         const ArrayView<const double> & /*state*/,
                          ConstitutiveUpdate &result) const
   {
     std::array<double, 3> strain = decompose_trial_strain(dF, be_n, result);

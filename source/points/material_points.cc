@@ -19,18 +19,27 @@ namespace impm
     const MPI_Comm                communicator,
     const Tensor<1, dim>         &gravity_from_the_start,
     const RunState               *checkpoint_state,
-    const unsigned int            n_contact_tractions)
+    const PointFields            &coupling_fields)
     : bodies(bodies)
     , grid(grid.cartesian())
     , communicator(communicator)
   {
-    bool any_plastic = false;
+    std::vector<PointFields> material_fields;
     for (const auto &body : bodies)
-      any_plastic = any_plastic || body.material->is_plastic();
+      material_fields.push_back(body.material->state_fields());
     property_layout.initialize(PointProperties<dim>::n_fixed_properties,
-                               any_plastic,
-                               bodies.size() > 1,
-                               n_contact_tractions);
+                               material_fields,
+                               coupling_fields);
+    // A checkpoint resumes into the layout it was written with only (its
+    // particle data would be read wrongly otherwise).
+    if (checkpoint_state != nullptr &&
+        checkpoint_state->get_string("points.layout") !=
+          property_layout.description())
+      throw InputError(
+        "The checkpoint's material points store " +
+        checkpoint_state->get_string("points.layout") + ", this scene's " +
+        property_layout.description() +
+        ": resume with the scene the checkpoint was written from.");
     // Each process seeds the points of its cells: share the cells by the
     // points they will hold first, so that the processes whose cells hold
     // the bodies do not seed (and store) all points until the first
@@ -46,7 +55,7 @@ namespace impm
         });
     particle_handler.initialize(grid.get_triangulation(),
                                 grid.get_mapping(),
-                                property_layout.n_properties);
+                                property_layout.n_properties());
     if (checkpoint_state == nullptr)
       {
         seed(grid, gravity_from_the_start);
@@ -70,21 +79,20 @@ namespace impm
 
   template <int dim>
   void
-  MaterialPoints<dim>::set_contact_tractions(
-    const std::vector<double> &tractions)
+  MaterialPoints<dim>::set_coupling_field(const std::string     &name,
+                                          const PointSteps<dim> &point_steps,
+                                          const std::vector<double> &values)
   {
-    const unsigned int first = property_layout.contact_traction;
+    const unsigned int first = property_layout.coupling_field(name);
     Assert(first != PointLayout::absent, ExcInternalError());
-    const unsigned int n = property_layout.n_properties - first;
-    AssertDimension(tractions.size(), n * n_local_points());
-    unsigned int p = 0;
+    AssertDimension(point_steps.size(), n_local_points());
+    const std::size_t n =
+      values.size() / std::max<std::size_t>(point_steps.size(), 1);
+    AssertDimension(values.size(), n * point_steps.size());
     for (auto &point : particle_handler)
       {
-        auto properties = point.get_properties();
-        std::copy(tractions.begin() + p * n,
-                  tractions.begin() + (p + 1) * n,
-                  properties.begin() + first);
-        ++p;
+        const auto from = values.begin() + point_steps.index_of(point) * n;
+        std::copy(from, from + n, point.get_properties().begin() + first);
       }
   }
 
@@ -106,6 +114,7 @@ namespace impm
     state.set("points.mass at creation", mass_at_creation);
     state.set("points.number",
               static_cast<double>(particle_handler.n_global_particles()));
+    state.set("points.layout", property_layout.description());
   }
 
 
@@ -199,7 +208,7 @@ namespace impm
     for (unsigned int d = 0; d < dim; ++d)
       cell_volume *= grid.cell_size[d];
 
-    std::vector<double> properties(property_layout.n_properties, 0.);
+    std::vector<double> properties(property_layout.n_properties(), 0.);
     for (unsigned int i = 0; i < 3; ++i)
       {
         properties[P::deformation_gradient + 4 * i]  = 1.;
@@ -233,8 +242,8 @@ namespace impm
                   properties[P::initial_domain_half_length + d] =
                     grid.cell_size[d] / (2. * n);
                 }
-              if (property_layout.body != PointLayout::absent)
-                properties[property_layout.body] = b;
+              if (property_layout.body_index() != PointLayout::absent)
+                properties[property_layout.body_index()] = b;
               for (unsigned int q = 0; q < n_per_cell; ++q)
                 {
                   Point<dim>       reference;
@@ -294,6 +303,26 @@ namespace impm
 
 
 
+  namespace
+  {
+    /** What force effects may know of one point. */
+    template <int dim>
+    MaterialPointInfo<dim>
+    info_of(const Particles::ParticleAccessor<dim> &point,
+            const unsigned int                      body)
+    {
+      const PointState<dim>  state(point.get_properties());
+      MaterialPointInfo<dim> info;
+      info.id               = point.get_id();
+      info.initial_position = state.initial_position();
+      info.body             = body;
+      info.mass             = state.mass();
+      return info;
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::vector<MaterialPointInfo<dim>>
   MaterialPoints<dim>::infos() const
@@ -301,15 +330,21 @@ namespace impm
     std::vector<MaterialPointInfo<dim>> list;
     list.reserve(n_local_points());
     for (const auto &point : particle_handler)
-      {
-        const auto              properties = point.get_properties();
-        const PointState<dim>   state(properties);
-        MaterialPointInfo<dim> &info = list.emplace_back();
-        info.id                      = point.get_id();
-        info.initial_position        = state.initial_position();
-        info.body                    = body_of(properties);
-        info.mass                    = state.mass();
-      }
+      list.push_back(info_of(point, body_of(point.get_properties())));
+    return list;
+  }
+
+
+
+  template <int dim>
+  std::vector<MaterialPointInfo<dim>>
+  MaterialPoints<dim>::infos(const PointSteps<dim> &point_steps) const
+  {
+    AssertDimension(point_steps.size(), n_local_points());
+    std::vector<MaterialPointInfo<dim>> list(n_local_points());
+    for (const auto &point : particle_handler)
+      list[point_steps.index_of(point)] =
+        info_of(point, body_of(point.get_properties()));
     return list;
   }
 
@@ -338,16 +373,15 @@ namespace impm
 
   template <int dim>
   void
-  MaterialPoints<dim>::advance(const std::vector<PointStep<dim>> &point_steps,
-                               const NodalVector                 &increment,
-                               const bool         update_domains,
-                               const unsigned int load_step)
+  MaterialPoints<dim>::advance(const PointSteps<dim> &point_steps,
+                               const NodalVector     &increment,
+                               const bool             update_domains,
+                               const unsigned int     load_step)
   {
-    std::string  left_grid;
-    unsigned int p = 0;
+    std::string left_grid;
     for (auto &point : particle_handler)
       {
-        const PointStep<dim>        &step = point_steps[p++];
+        const PointStep<dim>        &step = point_steps.of(point);
         const auto                  &s    = step.support;
         const MutablePointState<dim> state(point.get_properties());
 
@@ -364,9 +398,8 @@ namespace impm
         state.set_elastic_left_cauchy_green(
           step.update.elastic_left_cauchy_green);
         state.set_kirchhoff_stress(step.update.kirchhoff_stress);
-        if (property_layout.plastic_multiplier != PointLayout::absent)
-          point.get_properties()[property_layout.plastic_multiplier] +=
-            step.update.plastic_multiplier;
+        step.material->store_state(step.update,
+                                   material_state(point.get_properties()));
 
         if (update_domains)
           {

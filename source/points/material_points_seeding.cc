@@ -6,6 +6,7 @@
 #include <impm/base/errors.h>
 #include <impm/points/material_points.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,18 +22,27 @@ namespace impm
     std::vector<double> &properties,
     std::string         &outside_yield_surface) const
   {
+    const MutablePointState<dim> state{ArrayView<double>(properties)};
+    // The declared state (material and couplings) starts at zero; the
+    // body's material then sets its own.
+    const unsigned int first = property_layout.material_state_first();
+    std::fill(properties.begin() + first, properties.end(), 0.);
+    const ArrayView<double> own_state(properties.data() + first,
+                                      body.material->n_state_entries());
     if (body.initial_stress.geostatic)
       {
-        const MutablePointState<dim> state{ArrayView<double>(properties)};
         const SymmetricTensor<2, 3> stress = body.geostatic_stress(position, g);
         const SymmetricTensor<2, 3> elastic_strain =
           body.material->elastic_strain_for_stress(stress);
         state.set_kirchhoff_stress(stress);
         state.set_elastic_left_cauchy_green(elastic_strain);
+        body.material->initialize_state(stress, own_state);
         // The start must lie inside the yield surface.
         ConstitutiveUpdate start;
         body.material->update(unit_symmetric_tensor<3>(),
                               elastic_strain,
+                              ArrayView<const double>(own_state.data(),
+                                                      own_state.size()),
                               start);
         if (start.plastic && outside_yield_surface.empty())
           {
@@ -49,9 +59,9 @@ namespace impm
       }
     else
       {
-        const MutablePointState<dim> state{ArrayView<double>(properties)};
         state.set_kirchhoff_stress(SymmetricTensor<2, 3>());
         state.set_elastic_left_cauchy_green(unit_symmetric_tensor<3>());
+        body.material->initialize_state(SymmetricTensor<2, 3>(), own_state);
       }
   }
 

@@ -43,14 +43,13 @@ namespace impm
       prm.declare_entry(
         "Fields",
         "all",
-        Patterns::MultipleSelection("all|displacement|initial_position|"
-                                    "stress|von_mises_stress|"
-                                    "plastic_multiplier|volume|rank|body"),
+        Patterns::List(Patterns::Anything()),
         "Point data written to the point files: all (every field the "
-        "scene's effects produce) or a list of displacement, "
-        "initial_position, stress (all six components), von_mises_stress, "
-        "plastic_multiplier (plastic materials only), volume, rank, body "
-        "(scenes with several bodies only).");
+        "scene's points have) or a list of displacement, initial_position, "
+        "stress (all six components), von_mises_stress, volume, rank, body "
+        "(scenes with several bodies only) and the state the scene's "
+        "materials declare: plastic_multiplier (the plastic models). A name "
+        "the scene's points do not store is an error.");
       prm.leave_subsection();
     }
 
@@ -72,14 +71,26 @@ namespace impm
             return true;
         return false;
       };
-      fields.displacement       = wanted("displacement");
-      fields.initial_position   = wanted("initial_position");
-      fields.stress             = wanted("stress");
-      fields.von_mises_stress   = wanted("von_mises_stress");
-      fields.plastic_multiplier = wanted("plastic_multiplier");
-      fields.volume             = wanted("volume");
-      fields.rank               = wanted("rank");
-      fields.body               = wanted("body");
+      fields.displacement     = wanted("displacement");
+      fields.initial_position = wanted("initial_position");
+      fields.stress           = wanted("stress");
+      fields.von_mises_stress = wanted("von_mises_stress");
+      fields.volume           = wanted("volume");
+      fields.rank             = wanted("rank");
+      fields.body             = wanted("body");
+      fields.all_declared     = wanted("all");
+      fields.declared.clear();
+      const std::vector<std::string> built_in = {"all",
+                                                 "displacement",
+                                                 "initial_position",
+                                                 "stress",
+                                                 "von_mises_stress",
+                                                 "volume",
+                                                 "rank",
+                                                 "body"};
+      for (const auto &name : names)
+        if (std::find(built_in.begin(), built_in.end(), name) == built_in.end())
+          fields.declared.push_back(name);
       prm.leave_subsection();
     }
 

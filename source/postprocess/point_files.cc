@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/errors.h>
 #include <impm/base/names.h>
 #include <impm/contact/rigid_contact.h>
 #include <impm/core/rigid_body.h>
@@ -7,8 +8,11 @@
 #include <impm/io/point_output.h>
 #include <impm/postprocess/postprocessor.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <string>
+#include <vector>
 
 namespace impm
 {
@@ -33,9 +37,14 @@ namespace impm
       {
         const auto &fields = context.parameters.output.fields;
         const auto &layout = context.material_points.layout();
-        plastic_multiplier = fields.plastic_multiplier &&
-                             layout.plastic_multiplier != PointLayout::absent;
-        body = fields.body && layout.body != PointLayout::absent;
+        body = fields.body && layout.body_index() != PointLayout::absent;
+        check_declared_names(fields.declared, layout);
+        for (const auto &field : layout.written_fields())
+          if (fields.all_declared ||
+              std::find(fields.declared.begin(),
+                        fields.declared.end(),
+                        field.name) != fields.declared.end())
+            declared_fields.push_back(field);
         for (unsigned int d = 0; d < dim && fields.displacement; ++d)
           add("displacement", true);
         for (unsigned int d = 0; d < dim && fields.initial_position; ++d)
@@ -46,8 +55,11 @@ namespace impm
                 false);
         if (fields.von_mises_stress)
           add("von_mises_stress", false);
-        if (plastic_multiplier)
-          add("plastic_multiplier", false);
+        for (const auto &field : declared_fields)
+          for (unsigned int k = 0; k < field.n_components; ++k)
+            add(field.n_components == 1 ? field.name :
+                                          field.name + "_" + std::to_string(k),
+                false);
         if (fields.volume)
           add("volume", false);
         if (fields.rank)
@@ -94,6 +106,34 @@ namespace impm
       }
 
     private:
+      /**
+       * Refuse a name in `Output/Fields` that is neither a built-in field
+       * nor one that the scene's points store (one line listing those).
+       */
+      static void
+      check_declared_names(const std::vector<std::string> &names,
+                           const PointLayout              &layout)
+      {
+        for (const auto &name : names)
+          {
+            bool known = false;
+            for (const auto &field : layout.written_fields())
+              known = known || field.name == name;
+            if (known)
+              continue;
+            std::string stored;
+            for (const auto &field : layout.written_fields())
+              stored += ", " + field.name;
+            throw InputError(
+              "Output/Fields names '" + name +
+              "', which this scene's points do not store; its fields are "
+              "displacement, initial_position, stress, von_mises_stress, "
+              "volume, rank" +
+              (layout.body_index() == PointLayout::absent ? "" : ", body") +
+              stored + ".");
+          }
+      }
+
       /**
        * Write each rigid body's surface at the load factor of the current
        * output as `rigid_k<suffix>.vtu` (polygons, ASCII); return the file
@@ -201,15 +241,22 @@ namespace impm
                 const SymmetricTensor<2, 3> s = deviator(sigma);
                 values[c++]                   = std::sqrt(1.5 * (s * s));
               }
-            if (plastic_multiplier)
-              values[c++] =
-                point.get_properties()[points.layout().plastic_multiplier];
+            const unsigned int body_index =
+              points.body_of(point.get_properties());
+            for (const auto &field : declared_fields)
+              {
+                const unsigned int first = field.first_by_body[body_index];
+                for (unsigned int k = 0; k < field.n_components; ++k)
+                  values[c++] = first == PointLayout::absent ?
+                                  0. :
+                                  point.get_properties()[first + k];
+              }
             if (fields.volume)
               values[c++] = J * state.initial_volume();
             if (fields.rank)
               values[c++] = this_rank;
             if (body)
-              values[c++] = points.body_of(point.get_properties()) + 1;
+              values[c++] = body_index + 1;
             output.set_point(p++, point.get_location(), values);
           }
         output.write(load_factor, load_step);
@@ -218,8 +265,9 @@ namespace impm
       PointOutput<dim>         output;
       std::vector<std::string> names;
       std::vector<bool>        is_vector;
-      bool                     plastic_multiplier;
-      bool                     body;
+      /** The declared fields written, in the layout's order. */
+      std::vector<PointLayout::WrittenField> declared_fields;
+      bool                                   body;
       /** The load factor of the output being written. */
       double load_factor = 0.;
     };

@@ -99,7 +99,7 @@ namespace impm
                       communicator,
                       acceleration_from_the_start(this->force_effects),
                       resume_state,
-                      couplings.point_state_entries())
+                      couplings.point_fields())
     , system(grid, communicator)
     , assembler(Assembler<dim>::create(parameters.solver.formulation,
                                        material_points,
@@ -403,7 +403,7 @@ namespace impm
   MPMSolver<dim>::accept_load_step(StepRecord &record)
   {
     for (const auto &coupling : couplings.list())
-      coupling->accept(material_points);
+      coupling->accept(material_points, system);
     const auto reactions      = problem.reactions();
     record.reactions          = reactions.by_column;
     record.reaction_imbalance = reactions.imbalance;
@@ -425,7 +425,7 @@ namespace impm
     // of touching the memory anew cost 2 % of the run: small step data is
     // kept.)
     const bool large =
-      system.point_steps.capacity() * sizeof(PointStep<dim>) > large_step_data;
+      system.point_steps.memory_consumption() > large_step_data;
     if (large)
       {
         system.release_point_steps();

@@ -48,8 +48,8 @@ namespace impm
      */
     template <int dim>
     std::vector<SupportRun>
-    support_runs(const std::vector<PointStep<dim>> &point_steps,
-                 std::vector<unsigned int>         &order)
+    support_runs(const PointSteps<dim>     &point_steps,
+                 std::vector<unsigned int> &order)
     {
       order.resize(point_steps.size());
       std::iota(order.begin(), order.end(), 0u);
@@ -100,7 +100,7 @@ namespace impm
       const std::vector<NodeBox<dim>>                           &boxes,
       const std::vector<std::pair<std::uint64_t, unsigned int>> &run_of_box,
       const std::vector<SupportRun>                             &runs,
-      const std::vector<PointStep<dim>>                         &point_steps,
+      const PointSteps<dim>                                     &point_steps,
       const std::vector<unsigned int>                           &order,
       const CartesianGrid<dim>                                  &cartesian)
     {
@@ -167,7 +167,7 @@ namespace impm
      */
     template <int dim>
     void
-    add_group(const std::vector<PointStep<dim>>          &point_steps,
+    add_group(const PointSteps<dim>                      &point_steps,
               const std::vector<types::global_dof_index> &index_in_system,
               const std::vector<unsigned int>            &order,
               const std::vector<SupportRun>              &runs,
@@ -227,7 +227,7 @@ namespace impm
   template <int dim>
   std::vector<AssemblyGroup>
   make_assembly_groups(
-    const std::vector<PointStep<dim>>          &point_steps,
+    const PointSteps<dim>                      &point_steps,
     const std::vector<types::global_dof_index> &index_in_system,
     const CartesianGrid<dim>                   &cartesian)
   {
@@ -314,11 +314,11 @@ namespace impm
 
 
   template std::vector<AssemblyGroup>
-  make_assembly_groups(const std::vector<PointStep<2>> &,
+  make_assembly_groups(const PointSteps<2> &,
                        const std::vector<types::global_dof_index> &,
                        const CartesianGrid<2> &);
   template std::vector<AssemblyGroup>
-  make_assembly_groups(const std::vector<PointStep<3>> &,
+  make_assembly_groups(const PointSteps<3> &,
                        const std::vector<types::global_dof_index> &,
                        const CartesianGrid<3> &);
 } // namespace impm

@@ -28,11 +28,10 @@ namespace impm
   {
     this->basis = basis;
     const BasisEvaluator<dim> evaluator(grid.cartesian(), basis);
-    point_steps.resize(material_points.n_local_points());
-    unsigned int p = 0;
+    point_steps.reinit(material_points.particles());
     for (const auto &point : material_points.particles())
       {
-        PointStep<dim>       &step       = point_steps[p++];
+        PointStep<dim>       &step       = point_steps.of(point);
         const auto            properties = point.get_properties();
         const PointState<dim> state(properties);
         evaluator.evaluate(point.get_location(),

@@ -118,7 +118,7 @@ namespace impm
      *  and every point's return map. */
     bool
     update_stresses(
-      std::vector<PointStep<dim>>             &point_steps,
+      PointSteps<dim>                         &point_steps,
       const std::function<bool(unsigned int)> &update_point) override;
 
     /** @brief add_patch_stiffness(). */
@@ -219,7 +219,7 @@ namespace impm
      * @f$\Delta\bar F_p@f$.
      */
     void
-    average(std::vector<PointStep<dim>> &point_steps);
+    average(PointSteps<dim> &point_steps);
 
     /**
      * @brief With pressure unknowns, the stress update of every point: find
@@ -234,7 +234,7 @@ namespace impm
      *   converge (a wild iterate: the Newton iteration fails).
      */
     bool
-    equalise_pressures(std::vector<PointStep<dim>>             &point_steps,
+    equalise_pressures(PointSteps<dim>                         &point_steps,
                        const std::function<bool(unsigned int)> &update_point);
 
     /**
@@ -298,11 +298,11 @@ namespace impm
      */
     template <typename Gradients, typename GradientMaps>
     void
-    add_patch_stiffness(const std::vector<PointStep<dim>> &point_steps,
-                        const Gradients                   &gradients,
-                        const GradientMaps                &gradient_maps,
-                        TrilinosWrappers::SparseMatrix    &matrix,
-                        const OffProcessRows              &off_process_rows);
+    add_patch_stiffness(const PointSteps<dim>          &point_steps,
+                        const Gradients                &gradients,
+                        const GradientMaps             &gradient_maps,
+                        TrilinosWrappers::SparseMatrix &matrix,
+                        const OffProcessRows           &off_process_rows);
 
     /** @brief One line for the run's list of effects. */
     std::string
@@ -317,11 +317,11 @@ namespace impm
      */
     template <typename Gradients, typename GradientMaps>
     void
-    add_pressure_stiffness(const std::vector<PointStep<dim>> &point_steps,
-                           const Gradients                   &gradients,
-                           const GradientMaps                &gradient_maps,
-                           TrilinosWrappers::SparseMatrix    &matrix,
-                           const OffProcessRows              &off_process_rows);
+    add_pressure_stiffness(const PointSteps<dim>          &point_steps,
+                           const Gradients                &gradients,
+                           const GradientMaps             &gradient_maps,
+                           TrilinosWrappers::SparseMatrix &matrix,
+                           const OffProcessRows           &off_process_rows);
 
     /**
      * @brief Number the pressure unknowns from @p first_pressure_index,
@@ -329,8 +329,8 @@ namespace impm
      * ghost cells) and make each patch's block. Collective.
      */
     void
-    set_up_pressure_unknowns(const MaterialPoints<dim>         &material_points,
-                             const std::vector<PointStep<dim>> &point_steps,
+    set_up_pressure_unknowns(const MaterialPoints<dim>    &material_points,
+                             const PointSteps<dim>        &point_steps,
                              const types::global_dof_index first_pressure_index,
                              const IndexSet               &owned_rows);
 
@@ -410,8 +410,8 @@ namespace impm
   template <int dim>
   template <typename Gradients, typename GradientMaps>
   void
-  FBar<dim>::add_patch_stiffness(const std::vector<PointStep<dim>> &point_steps,
-                                 const Gradients                   &gradients,
+  FBar<dim>::add_patch_stiffness(const PointSteps<dim>          &point_steps,
+                                 const Gradients                &gradients,
                                  const GradientMaps             &gradient_maps,
                                  TrilinosWrappers::SparseMatrix &matrix,
                                  const OffProcessRows &off_process_rows)
@@ -474,12 +474,11 @@ namespace impm
   template <int dim>
   template <typename Gradients, typename GradientMaps>
   void
-  FBar<dim>::add_pressure_stiffness(
-    const std::vector<PointStep<dim>> &point_steps,
-    const Gradients                   &gradients,
-    const GradientMaps                &gradient_maps,
-    TrilinosWrappers::SparseMatrix    &matrix,
-    const OffProcessRows              &off_process_rows)
+  FBar<dim>::add_pressure_stiffness(const PointSteps<dim> &point_steps,
+                                    const Gradients       &gradients,
+                                    const GradientMaps    &gradient_maps,
+                                    TrilinosWrappers::SparseMatrix &matrix,
+                                    const OffProcessRows &off_process_rows)
   {
     const unsigned int n_patches = mean_jacobian.size();
     for (unsigned int patch = 0; patch < n_patches; ++patch)

@@ -51,7 +51,8 @@ namespace impm
    * unknowns, which LoadStepProblem eliminates with the other couplings'.
    *
    * A converged step stores each face's friction traction in the point
-   * (PointLayout::contact_traction, only in scenes with friction) and sums
+   * (the point field `contact_friction_traction`, only in scenes with
+   * friction) and sums
    * the force on each body. A scene without rigid bodies creates none of
    * this.
    *
@@ -64,9 +65,13 @@ namespace impm
     /** @brief The coupling of a scene with rigid bodies. */
     explicit RigidContact(const CouplingInputs<dim> &inputs);
 
-    /** @brief The friction tractions' entries (traction_entries()). */
-    unsigned int
-    point_state_entries() const override;
+    /**
+     * @brief With friction, the field `contact_friction_traction`: the
+     * friction traction of each probe of each face of the point's domain
+     * (traction_entries() entries, not written).
+     */
+    PointFields
+    point_fields() const override;
 
     /** @brief begin(). */
     void
@@ -289,7 +294,8 @@ namespace impm
      * Collective.
      */
     void
-    accept(MaterialPoints<dim> &material_points) override;
+    accept(MaterialPoints<dim>       &material_points,
+           const LoadStepSystem<dim> &system) override;
 
     /** @brief The force of the material on a body, in parts. */
     struct BodyForce
@@ -386,6 +392,8 @@ namespace impm
 
     const std::vector<RigidBody<dim>> &rigid_bodies;
     const BackgroundGrid<dim>         &grid;
+    /** The name of the points' friction tractions (point_fields()). */
+    static constexpr const char *traction_field = "contact_friction_traction";
     /** Whether the points store friction tractions. */
     const bool friction;
     /** max_face_points() and traction_entries() of the bodies. */

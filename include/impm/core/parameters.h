@@ -375,14 +375,17 @@ namespace impm
         bool stress = true;
         /** The von Mises equivalent stress. */
         bool von_mises_stress = true;
-        /** The accumulated plastic multiplier (plastic scenes only). */
-        bool plastic_multiplier = true;
         /** The current volume. */
         bool volume = true;
         /** The process that owns the point. */
         bool rank = true;
         /** The body (scenes with several bodies only). */
         bool body = true;
+        /** Every field the materials and couplings declare as written. */
+        bool all_declared = true;
+        /** The declared fields named (checked against the scene's once
+         *  its points are laid out). */
+        std::vector<std::string> declared;
       } fields;
 
       /** @brief Declare the entries in subsection "Output". */

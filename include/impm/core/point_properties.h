@@ -6,7 +6,12 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <impm/base/point_field.h>
+
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace impm
 {
@@ -17,10 +22,10 @@ namespace impm
    * Tensors of the deformation are 3x3 in 2D too (plane strain); symmetric
    * ones are stored as the six independent entries in deal.II's unrolled
    * order (xx, yy, zz, xy, xz, yz). The properties every scene needs come
-   * first, in the enum; those only some scenes need (the plastic state of a
-   * plastic material, the body index of a scene with several bodies) follow
-   * in the order of PointLayout, and exist only when the scene asks for
-   * them.
+   * first, in the enum; those only some scenes need (the body index of a
+   * scene with several bodies, the state its materials and couplings
+   * declare) follow in the order of PointLayout, and exist only when the
+   * scene asks for them.
    *
    * @tparam dim Space dimension.
    */
@@ -52,41 +57,121 @@ namespace impm
   };
 
   /**
-   * @brief The optional properties of a scene's points and the total count.
+   * @brief Where the optional properties of a scene's points are: those
+   * the scene's description needs (the body index, with several bodies) and
+   * those declared by whoever needs them (PointField): the state variables
+   * of each body's material and the per-point history of the couplings.
+   *
+   * The properties follow the fixed ones of PointProperties: the body index
+   * (if any), then one block of material state, then the couplings' fields
+   * in the order declared. A point belongs to one body, so the bodies'
+   * materials share the material-state block: it is as long as the longest
+   * material's state, and each material sees its own fields at the start
+   * of the block, in the order it declared them.
    */
-  struct PointLayout
+  class PointLayout
   {
+  public:
     /** Marks a property the scene does not store. */
     static constexpr unsigned int absent =
       std::numeric_limits<unsigned int>::max();
 
-    /** Accumulated plastic multiplier, if any body is plastic. */
-    unsigned int plastic_multiplier = absent;
-    /** Index of the point's body, if the scene has several. */
-    unsigned int body = absent;
-    /** First of the friction tractions of the domain's faces (dim per
-     *  face, 2 dim faces), if the scene has a rigid body with friction. */
-    unsigned int contact_traction = absent;
-    /** Number of properties per point. */
-    unsigned int n_properties = 0;
+    /**
+     * @brief A field the point files may write: its name, its number of
+     * entries and, for each body, the index of its first entry (absent if
+     * that body's points do not store it).
+     */
+    struct WrittenField
+    {
+      /** The field's name. */
+      std::string name;
+      /** Entries per point. */
+      unsigned int n_components;
+      /** The first entry's property index, per body (absent: not stored). */
+      std::vector<unsigned int> first_by_body;
+    };
 
     /**
-     * @brief Lay out the optional properties after the @p n_fixed ones
-     * (@p n_contact_tractions: the friction tractions' entries, or 0).
+     * @brief Lay out the optional properties after the @p n_fixed ones.
+     * @param n_fixed The properties every point has.
+     * @param material_fields The state fields of each body's material, by
+     *   body (their number is the scene's number of bodies).
+     * @param coupling_fields The fields the scene's couplings declare.
+     * @throw std::logic_error If two declarations of one name differ in
+     *   size or two couplings declare the same name (a plugin's mistake).
      */
     void
-    initialize(const unsigned int n_fixed,
-               const bool         plastic,
-               const bool         several_bodies,
-               const unsigned int n_contact_tractions = 0)
+    initialize(const unsigned int              n_fixed,
+               const std::vector<PointFields> &material_fields,
+               const PointFields              &coupling_fields);
+
+    /** @brief The number of properties per point. */
+    unsigned int
+    n_properties() const
     {
-      n_properties       = n_fixed;
-      plastic_multiplier = plastic ? n_properties++ : absent;
-      body               = several_bodies ? n_properties++ : absent;
-      contact_traction   = n_contact_tractions > 0 ? n_properties : absent;
-      n_properties += n_contact_tractions;
+      return n_total;
     }
+
+    /** @brief The property holding the body index, or absent (one body). */
+    unsigned int
+    body_index() const
+    {
+      return body;
+    }
+
+    /** @brief The first property of the material state block. */
+    unsigned int
+    material_state_first() const
+    {
+      return material_first;
+    }
+
+    /** @brief The number of state entries of body @p b's material. */
+    unsigned int
+    n_material_state(const unsigned int b) const
+    {
+      return material_sizes[b];
+    }
+
+    /**
+     * @brief The first property of the coupling field @p name, or absent
+     * if no coupling of the scene declared it.
+     */
+    unsigned int
+    coupling_field(const std::string &name) const;
+
+    /** @brief The fields the point files may write, in declaration order. */
+    const std::vector<WrittenField> &
+    written_fields() const
+    {
+      return writable;
+    }
+
+    /**
+     * @brief One line naming every optional property and its size, for the
+     * checkpoint: a checkpoint resumes only into the same layout.
+     */
+    std::string
+    description() const;
+
+  private:
+    /** The body index's property, or absent. */
+    unsigned int body = absent;
+    /** The first property of the material-state block. */
+    unsigned int material_first = 0;
+    /** Each body's material-state entries. */
+    std::vector<unsigned int> material_sizes;
+    /** Each body's material's fields (for the description). */
+    std::vector<PointFields> material_declarations;
+    /** The couplings' fields and their first properties. */
+    std::vector<std::pair<PointField, unsigned int>> couplings;
+    /** The fields the point files may write. */
+    std::vector<WrittenField> writable;
+    /** Number of properties per point. */
+    unsigned int n_total = 0;
   };
+
+
 
   /**
    * @brief Typed read access to one material point's properties: the one

@@ -156,10 +156,16 @@ namespace impm
     virtual bool
     needs_direct_solver() const;
 
-    /** @brief Entries this coupling stores in every point (their place:
-     *  PointLayout::coupling_state); 0 by default. */
-    virtual unsigned int
-    point_state_entries() const;
+    /**
+     * @brief The fields this coupling stores at every material point (a
+     * history it needs from step to step); none by default. The points lay
+     * them out, write those marked written and keep them in checkpoints; the
+     * coupling finds its field's first entry in a point's properties with
+     * PointLayout::coupling_field(name) and stores new values with
+     * MaterialPoints::set_coupling_field().
+     */
+    virtual PointFields
+    point_fields() const;
 
     /** @brief Whether it may hold the material in displacement component
      *  @p component, so that no face condition needs to (a floor, springs):
@@ -239,7 +245,7 @@ namespace impm
      * Collective.
      */
     virtual bool
-    update_stresses(std::vector<PointStep<dim>>             &point_steps,
+    update_stresses(PointSteps<dim>                         &point_steps,
                     const std::function<bool(unsigned int)> &update_point);
 
     /**
@@ -377,9 +383,11 @@ namespace impm
     /** @{ */
 
     /** @brief Take the converged step: store what it keeps (in the points
-     *  too). Collective. */
+     *  too: its point_fields(), by the points' steps in @p system).
+     *  Collective. */
     virtual void
-    accept(MaterialPoints<dim> &material_points);
+    accept(MaterialPoints<dim>       &material_points,
+           const LoadStepSystem<dim> &system);
 
     /** @brief The force of the material on what this coupling stands for
      *  (bodies, springs) at the last accepted step, which carries part of
@@ -465,9 +473,9 @@ namespace impm
       return sets_volumes;
     }
 
-    /** @brief The entries all couplings store per point. */
-    unsigned int
-    point_state_entries() const;
+    /** @brief The fields all couplings store per point. */
+    PointFields
+    point_fields() const;
 
     /** @brief Whether any coupling needs a direct linear solver. */
     bool

@@ -113,10 +113,10 @@ namespace impm
    * derivative per point: it calls the return again from the trial
    * eigenvalues, which costs a few dozen operations.
    *
-   * The hardening variable passed to update() is the point's accumulated
-   * plastic multiplier @f$\kappa@f$; the equivalent plastic strain that
-   * drives the cohesion is @f$\bar\varepsilon^p = h\,\kappa@f$ with the
-   * model's factor h.
+   * The model's one state variable is the point's accumulated plastic
+   * multiplier @f$\kappa@f$ (`plastic_multiplier`); the equivalent plastic
+   * strain that drives the cohesion is @f$\bar\varepsilon^p = h\,\kappa@f$
+   * with the model's factor h.
    */
   class PrincipalStressPlasticity : public Material
   {
@@ -131,11 +131,21 @@ namespace impm
 
     using Material::update;
 
+    /** @brief The accumulated plastic multiplier @f$\kappa@f$. */
+    PointFields
+    state_fields() const override;
+
+    /** @brief The return, with @f$\kappa@f$ the first entry of @p state. */
     void
-    update(const Tensor<2, 3>          &deformation_increment,
-           const SymmetricTensor<2, 3> &previous_elastic_strain,
-           const double                 hardening_variable,
-           ConstitutiveUpdate          &result) const override;
+    update(const Tensor<2, 3>            &deformation_increment,
+           const SymmetricTensor<2, 3>   &previous_elastic_strain,
+           const ArrayView<const double> &state,
+           ConstitutiveUpdate            &result) const override;
+
+    /** @brief Accumulate @f$\kappa@f$. */
+    void
+    store_state(const ConstitutiveUpdate &result,
+                const ArrayView<double>  &state) const override;
 
     void
     tangent(const ConstitutiveUpdate &result,
@@ -147,12 +157,6 @@ namespace impm
                         const unsigned int        n_components,
                         const Tensor<2, 3>       &deformation_increment_inverse,
                         Tensor<4, 3>             &M) const override;
-
-    bool
-    is_plastic() const override
-    {
-      return true;
-    }
 
     /**
      * @brief True for associated flow (dilation angle equal to the friction

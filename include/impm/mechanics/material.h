@@ -1,11 +1,13 @@
 #ifndef impm_mechanics_material_h
 #define impm_mechanics_material_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
 #include <impm/base/plugin_list.h>
+#include <impm/base/point_field.h>
 
 #include <array>
 #include <functional>
@@ -45,9 +47,9 @@ namespace impm
     /** Unit deviatoric flow direction in the principal frame when plastic. */
     std::array<double, 3> flow_direction = {{0., 0., 0.}};
     /**
-     * The hardening variable at the start of the step, as update() received
-     * it (the point's accumulated plastic multiplier); models with hardening
-     * need it again in their tangent.
+     * The hardening variable at the start of the step, as update() read it
+     * from the point's state (the accumulated plastic multiplier); models
+     * with hardening need it again in their tangent.
      */
     double hardening_variable = 0.;
   };
@@ -154,31 +156,65 @@ namespace impm
     virtual ~Material() = default;
 
     /**
+     * @brief The state variables the model stores at each of its points,
+     * beside the stress and the elastic strain every point has (a
+     * hardening variable, a preconsolidation pressure, a back stress): the
+     * points' layout, their files and the checkpoint follow from this
+     * declaration. update() sees the entries in this order. The default is
+     * none.
+     */
+    virtual PointFields
+    state_fields() const
+    {
+      return {};
+    }
+
+    /** @brief The number of state entries, the sum over state_fields(). */
+    unsigned int
+    n_state_entries() const;
+
+    /**
+     * @brief The state of a new point whose Kirchhoff stress is @p
+     * kirchhoff_stress (zero or geostatic) into @p state (n_state_entries()
+     * entries). The default sets every entry to zero.
+     */
+    virtual void
+    initialize_state(const SymmetricTensor<2, 3> &kirchhoff_stress,
+                     const ArrayView<double>     &state) const;
+
+    /**
      * @brief Stress update (elastic predictor, plastic corrector).
      *
      * @param deformation_increment @f$\Delta F@f$ (3x3).
      * @param previous_elastic_strain @f$b^e_n@f$.
-     * @param hardening_variable The point's accumulated plastic multiplier
-     *   at the start of the step (read by models with hardening only).
-     * @param[out] result The new stress and state.
+     * @param state The point's state variables at the start of the step
+     *   (state_fields(), in their order); empty if the model has none.
+     * @param[out] result The new stress and what the tangent and
+     *   store_state() need.
      */
     virtual void
-    update(const Tensor<2, 3>          &deformation_increment,
-           const SymmetricTensor<2, 3> &previous_elastic_strain,
-           const double                 hardening_variable,
-           ConstitutiveUpdate          &result) const = 0;
+    update(const Tensor<2, 3>            &deformation_increment,
+           const SymmetricTensor<2, 3>   &previous_elastic_strain,
+           const ArrayView<const double> &state,
+           ConstitutiveUpdate            &result) const = 0;
 
     /**
-     * @brief The update of a point without hardening history (a hardening
-     * variable of zero).
+     * @brief The update of a new point: the state initialize_state() gives
+     * at zero stress.
      */
     void
     update(const Tensor<2, 3>          &deformation_increment,
            const SymmetricTensor<2, 3> &previous_elastic_strain,
-           ConstitutiveUpdate          &result) const
-    {
-      update(deformation_increment, previous_elastic_strain, 0., result);
-    }
+           ConstitutiveUpdate          &result) const;
+
+    /**
+     * @brief A converged step's end: write the state variables at the end
+     * of the step from the update @p result into @p state, which holds them
+     * at the start. The default (a model without state) does nothing.
+     */
+    virtual void
+    store_state(const ConstitutiveUpdate &result,
+                const ArrayView<double>  &state) const;
 
     /**
      * @brief The tangent @f$\mathcal C_{imkl}@f$ of the last update, for
@@ -212,13 +248,6 @@ namespace impm
                         const unsigned int        n_components,
                         const Tensor<2, 3>       &deformation_increment_inverse,
                         Tensor<4, 3>             &M) const;
-
-    /**
-     * @brief Whether the model can become plastic: an elastic model has no
-     * plastic state to store or to write.
-     */
-    virtual bool
-    is_plastic() const = 0;
 
     /**
      * @brief Whether the tangent has major symmetry,
@@ -279,12 +308,24 @@ namespace impm
 
     using Material::update;
 
-    /** The radial return; @p hardening_variable is not read. */
+    /**
+     * @brief The accumulated plastic multiplier, if the model is plastic
+     * (written, not read: the model does not harden).
+     */
+    PointFields
+    state_fields() const override;
+
+    /** The radial return; @p state is not read. */
     void
-    update(const Tensor<2, 3>          &deformation_increment,
-           const SymmetricTensor<2, 3> &previous_elastic_strain,
-           const double                 hardening_variable,
-           ConstitutiveUpdate          &result) const override;
+    update(const Tensor<2, 3>            &deformation_increment,
+           const SymmetricTensor<2, 3>   &previous_elastic_strain,
+           const ArrayView<const double> &state,
+           ConstitutiveUpdate            &result) const override;
+
+    /** @brief Accumulate the plastic multiplier. */
+    void
+    store_state(const ConstitutiveUpdate &result,
+                const ArrayView<double>  &state) const override;
 
     void
     tangent(const ConstitutiveUpdate &result,
@@ -303,8 +344,9 @@ namespace impm
                         const Tensor<2, 3>       &deformation_increment_inverse,
                         Tensor<4, 3>             &M) const override;
 
+    /** @brief Whether the yield stress is finite. */
     bool
-    is_plastic() const override;
+    is_plastic() const;
 
     /**
      * @brief True: Hencky elasticity derives from a stored energy and the

@@ -39,7 +39,8 @@ namespace impm
 
   /**
    * @brief The material points: seeded in the bodies, stored in deal.II's
-   * particle handler with the properties of PointProperties and PointLayout,
+   * particle handler with the properties of PointProperties and PointLayout
+   * (laid out from the state the materials and couplings declare),
    * moved with the grid's displacement at the end of each load step and
    * re-sorted into cells and processes.
    *
@@ -64,23 +65,26 @@ namespace impm
      *   take the points that a checkpoint attached to the grid (which
      *   BackgroundGrid has loaded) and their mass at creation from this
      *   state.
-     * @param n_contact_tractions Entries per point for the friction
-     *   tractions of a rigid contact (PointLayout::contact_traction), or 0.
+     * @param coupling_fields The point fields the scene's couplings declare
+     *   (Coupling::point_fields()); the bodies' materials declare theirs
+     *   (Material::state_fields()).
      */
     MaterialPoints(const std::vector<Body<dim>> &bodies,
                    BackgroundGrid<dim>          &grid,
                    const MPI_Comm                communicator,
                    const Tensor<1, dim>         &gravity_from_the_start,
-                   const RunState               *checkpoint_state    = nullptr,
-                   const unsigned int            n_contact_tractions = 0);
+                   const RunState               *checkpoint_state = nullptr,
+                   const PointFields            &coupling_fields  = {});
 
     /**
-     * @brief Store the friction tractions of a rigid contact: @p tractions
-     * holds PointLayout's contact-traction entries of every local point,
-     * in the particle handler's order.
+     * @brief Store the values of the coupling field @p name (declared by a
+     * coupling) of every local point: @p values holds the field's entries
+     * of each point by the index of its step in @p point_steps.
      */
     void
-    set_contact_tractions(const std::vector<double> &tractions);
+    set_coupling_field(const std::string         &name,
+                       const PointSteps<dim>     &point_steps,
+                       const std::vector<double> &values);
 
     /**
      * @brief Attach the points to the grid's cells for a checkpoint (call
@@ -89,7 +93,10 @@ namespace impm
     void
     prepare_for_checkpoint();
 
-    /** @brief Save the points' replicated state (their mass at creation). */
+    /**
+     * @brief Save the points' replicated state (their mass at creation,
+     * their number and their layout).
+     */
     void
     save(RunState &state) const;
 
@@ -132,9 +139,10 @@ namespace impm
     unsigned int
     body_of(const ArrayView<const double> &properties) const
     {
-      return property_layout.body == PointLayout::absent ?
+      return property_layout.body_index() == PointLayout::absent ?
                0 :
-               static_cast<unsigned int>(properties[property_layout.body]);
+               static_cast<unsigned int>(
+                 properties[property_layout.body_index()]);
     }
 
     /** @brief The material of a point's properties (of its body). */
@@ -145,11 +153,37 @@ namespace impm
     }
 
     /**
+     * @brief The state variables of a point's material (in the order of
+     * Material::state_fields()) within its @p properties.
+     */
+    ArrayView<const double>
+    material_state(const ArrayView<const double> &properties) const
+    {
+      return {properties.data() + property_layout.material_state_first(),
+              property_layout.n_material_state(body_of(properties))};
+    }
+
+    /** @brief The same, to write. */
+    ArrayView<double>
+    material_state(const ArrayView<double> &properties) const
+    {
+      return {properties.data() + property_layout.material_state_first(),
+              property_layout.n_material_state(body_of(properties))};
+    }
+
+    /**
      * @brief What force effects may know of this process's points, in
      * iteration order.
      */
     std::vector<MaterialPointInfo<dim>>
     infos() const;
+
+    /**
+     * @brief The same, each point at the index of its step in @p
+     * point_steps.
+     */
+    std::vector<MaterialPointInfo<dim>>
+    infos(const PointSteps<dim> &point_steps) const;
 
     /**
      * @brief The volume fraction of each locally owned cell that its points
@@ -162,23 +196,23 @@ namespace impm
     /**
      * @brief End a converged load step: move each point with the grid's
      * displacement increment, compose its deformation gradient, store the
-     * new stress and state and stretch its GIMP domain (if @p
-     * update_domains). The points are then in the cells of the step's
+     * new stress and its material's state (Material::store_state()) and
+     * stretch its GIMP domain (if @p update_domains). The points are then in the cells of the step's
      * start: sort_into_cells() follows.
      *
      * A point that leaves the grid (or becomes non-finite) stops the run
      * with an error naming it, the step, its positions and the grid.
      *
-     * @param point_steps The step's per-point data, in iteration order.
+     * @param point_steps The step's per-point data.
      * @param increment The converged displacement increment (ghosted).
      * @param update_domains Whether GIMP domains follow the stretch.
      * @param load_step The step's number, for messages.
      */
     void
-    advance(const std::vector<PointStep<dim>> &point_steps,
-            const NodalVector                 &increment,
-            const bool                         update_domains,
-            const unsigned int                 load_step);
+    advance(const PointSteps<dim> &point_steps,
+            const NodalVector     &increment,
+            const bool             update_domains,
+            const unsigned int     load_step);
 
     /**
      * @brief Re-sort the points into the cells and processes of their new
@@ -224,9 +258,9 @@ namespace impm
     /**
      * @brief The initial stress of a point of @p body at @p position into
      * @p properties: zero, or the body's geostatic stress under gravity @p
-     * g with the elastic strain its material gives it; the first geostatic
-     * stress outside the yield surface is described in @p
-     * outside_yield_surface.
+     * g with the elastic strain its material gives it, and its material's
+     * state at that stress; the first geostatic stress outside the yield
+     * surface is described in @p outside_yield_surface.
      */
     void
     set_initial_stress(const Body<dim>     &body,

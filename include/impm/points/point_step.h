@@ -3,20 +3,26 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <deal.II/particles/particle_accessor.h>
+#include <deal.II/particles/particle_handler.h>
+
 #include <impm/basis/basis_functions.h>
 #include <impm/mechanics/material.h>
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
+#include <limits>
+#include <vector>
 
 namespace impm
 {
   using namespace dealii;
 
   /**
-   * @brief What one material point needs during one load step, in the
-   * particle handler's iteration order: its support on the start-of-step
-   * grid (fixed during the step) and the state of the current Newton
-   * iterate.
+   * @brief What one material point needs during one load step: its support
+   * on the start-of-step grid (fixed during the step) and the state of the
+   * current Newton iterate.
    *
    * @tparam dim Space dimension.
    */
@@ -40,6 +46,152 @@ namespace impm
     const Material *material;
     /** Constitutive result of the current iterate. */
     ConstitutiveUpdate update;
+  };
+
+
+
+  /**
+   * @brief The per-point data of one load step (PointStep) for this
+   * process's points: by index for the loops over the step's points (the
+   * assembly groups, the couplings' patches and probes) and from the
+   * particle for the loops over the particles (the stress update, the
+   * end of the step), so that no loop relies on visiting the particles in
+   * the order in which the steps were made.
+   *
+   * The particle's local index (ParticleAccessor::get_local_index()) is
+   * stable while the particles stay where they are, that is for the whole
+   * load step: reinit() must follow every sort of the particles.
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class PointSteps
+  {
+  public:
+    /** @brief The iterators over the steps. */
+    using iterator = typename std::vector<PointStep<dim>>::iterator;
+    /** @brief The constant iterators over the steps. */
+    using const_iterator =
+      typename std::vector<PointStep<dim>>::const_iterator;
+
+    /**
+     * @brief One step for each point of @p particles (in their iteration
+     * order, which is the order of the indices), with the map from the
+     * particles' local indices.
+     */
+    void
+    reinit(const Particles::ParticleHandler<dim> &particles)
+    {
+      steps.resize(particles.n_locally_owned_particles());
+      // The largest local index, from the particles themselves (deal.II's
+      // get_max_local_particle_index() is not refreshed by every change of
+      // the particles, a repartition for one).
+      unsigned int n_indices = 0;
+      for (const auto &particle : particles)
+        n_indices =
+          std::max<unsigned int>(n_indices, particle.get_local_index() + 1);
+      index_of_particle.assign(n_indices,
+                               std::numeric_limits<unsigned int>::max());
+      unsigned int p = 0;
+      for (const auto &particle : particles)
+        index_of_particle[particle.get_local_index()] = p++;
+    }
+
+    /** @brief The number of points. */
+    std::size_t
+    size() const
+    {
+      return steps.size();
+    }
+
+    /** @brief The step of point @p p. */
+    PointStep<dim> &
+    operator[](const std::size_t p)
+    {
+      return steps[p];
+    }
+
+    /** @brief The step of point @p p. */
+    const PointStep<dim> &
+    operator[](const std::size_t p) const
+    {
+      return steps[p];
+    }
+
+    /** @brief The index of the step of @p particle. */
+    unsigned int
+    index_of(const Particles::ParticleAccessor<dim> &particle) const
+    {
+      const unsigned int p = index_of_particle[particle.get_local_index()];
+      Assert(p < steps.size(), ExcInternalError());
+      return p;
+    }
+
+    /** @brief The step of @p particle. */
+    PointStep<dim> &
+    of(const Particles::ParticleAccessor<dim> &particle)
+    {
+      return steps[index_of(particle)];
+    }
+
+    /** @brief The step of @p particle. */
+    const PointStep<dim> &
+    of(const Particles::ParticleAccessor<dim> &particle) const
+    {
+      return steps[index_of(particle)];
+    }
+
+    /** @brief The first step. */
+    iterator
+    begin()
+    {
+      return steps.begin();
+    }
+
+    /** @brief The end of the steps. */
+    iterator
+    end()
+    {
+      return steps.end();
+    }
+
+    /** @brief The first step. */
+    const_iterator
+    begin() const
+    {
+      return steps.begin();
+    }
+
+    /** @brief The end of the steps. */
+    const_iterator
+    end() const
+    {
+      return steps.end();
+    }
+
+    /** @brief The memory the steps hold, in bytes. */
+    std::size_t
+    memory_consumption() const
+    {
+      return steps.capacity() * sizeof(PointStep<dim>) +
+             index_of_particle.capacity() * sizeof(unsigned int);
+    }
+
+    /** @brief Free the memory (after a converged step). */
+    void
+    release()
+    {
+      steps.clear();
+      steps.shrink_to_fit();
+      index_of_particle.clear();
+      index_of_particle.shrink_to_fit();
+    }
+
+  private:
+    /** The steps, by index. */
+    std::vector<PointStep<dim>> steps;
+    /** The index of each particle's step, by the particle's local index. */
+    std::vector<unsigned int> index_of_particle;
   };
 } // namespace impm
 

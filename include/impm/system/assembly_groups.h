@@ -57,7 +57,7 @@ namespace impm
   template <int dim>
   std::vector<AssemblyGroup>
   make_assembly_groups(
-    const std::vector<PointStep<dim>>          &point_steps,
+    const PointSteps<dim>                      &point_steps,
     const std::vector<types::global_dof_index> &index_in_system,
     const CartesianGrid<dim>                   &grid);
 } // namespace impm

@@ -114,7 +114,7 @@ namespace impm
       const std::vector<std::vector<types::global_dof_index>> &blocks);
 
     /** @brief The per-point data of this step, in iteration order. */
-    std::vector<PointStep<dim>> point_steps;
+    PointSteps<dim> point_steps;
     /** @brief The points grouped by support. */
     std::vector<AssemblyGroup> assembly_groups;
 
@@ -195,8 +195,7 @@ namespace impm
     void
     release_point_steps()
     {
-      point_steps.clear();
-      point_steps.shrink_to_fit();
+      point_steps.release();
     }
 
     /**
