@@ -71,8 +71,7 @@ namespace impm
     /** @brief The iterators over the steps. */
     using iterator = typename std::vector<PointStep<dim>>::iterator;
     /** @brief The constant iterators over the steps. */
-    using const_iterator =
-      typename std::vector<PointStep<dim>>::const_iterator;
+    using const_iterator = typename std::vector<PointStep<dim>>::const_iterator;
 
     /**
      * @brief One step for each point of @p particles (in their iteration
