@@ -8,7 +8,6 @@
 #include <impm/base/errors.h>
 #include <impm/core/default_scene.h>
 #include <impm/core/parameters.h>
-#include <impm/coupling/coupling.h>
 #include <impm/io/scene_input.h>
 #include <impm/simulator/run.h>
 
@@ -120,8 +119,7 @@ main(int argc, char **argv)
         }
 
       dealii::ParameterHandler prm;
-      impm::Parameters::declare_all(prm);
-      impm::Couplings<2>::declare_parameters(prm);
+      impm::declare_run_parameters(prm);
       if (print_parameters)
         {
           if (is_root)

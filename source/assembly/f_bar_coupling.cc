@@ -145,12 +145,12 @@ namespace impm
 
   template <int dim>
   std::vector<std::string>
-  FBar<dim>::notes(const Parameters::Solver &solver) const
+  FBar<dim>::notes(const Parameters::LinearSolverType linear_solver) const
   {
     if (!has_pressure_unknowns())
       return {};
     return {std::string("with cell pressure unknowns ") +
-            (solver.linear_solver == Parameters::LinearSolverType::gmres_amg ?
+            (linear_solver == Parameters::LinearSolverType::gmres_amg ?
                "GMRES with AMG may not converge (its AMG does not solve "
                "the pressure rows); 'direct' or 'MUMPS' will" :
                "the linear solves are direct")};
@@ -195,7 +195,7 @@ namespace impm
                                          const double);                  \
   template bool   FBar<dim>::needs_direct_solver() const;                \
   template std::vector<std::string> FBar<dim>::notes(                    \
-    const Parameters::Solver &) const;                                   \
+    const Parameters::LinearSolverType) const;                           \
   template std::vector<std::string> FBar<dim>::descriptions() const;
   IMPM_INSTANTIATE(2)
   IMPM_INSTANTIATE(3)

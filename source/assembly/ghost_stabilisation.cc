@@ -15,6 +15,46 @@
 
 namespace impm
 {
+  namespace Parameters
+  {
+    void
+    Stabilisation::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Enabled",
+                        "true",
+                        Patterns::Bool(),
+                        "Penalise the jump of the normal gradient of the "
+                        "displacement increment across faces between two "
+                        "cells in the system when one of them is filled "
+                        "to less than 'Fill threshold', so that a node fed "
+                        "only by the edge of a point's domain cannot make "
+                        "the system singular.");
+      prm.declare_entry("Penalty scale",
+                        "0.01",
+                        Patterns::Double(0.),
+                        "gamma >= 0: the face penalty is gamma E h times the "
+                        "integral of the products of the jumps.");
+      prm.declare_entry("Fill threshold",
+                        "0.9",
+                        Patterns::Double(0., 10.),
+                        "Cells whose points' current volume is less than "
+                        "this fraction of the cell's volume are treated as "
+                        "partly filled (0 to 10).");
+    }
+
+
+
+    void
+    Stabilisation::parse_parameters(ParameterHandler &prm)
+    {
+      enabled        = prm.get_bool("Enabled");
+      penalty_scale  = prm.get_double("Penalty scale");
+      fill_threshold = prm.get_double("Fill threshold");
+    }
+  } // namespace Parameters
+
+
+
   template <int dim>
   GhostStabilisation<dim>::GhostStabilisation(
     const Parameters::Stabilisation &parameters,
@@ -274,9 +314,14 @@ namespace impm
 
   template <int dim>
   GhostStabilisation<dim>::GhostStabilisation(const CouplingInputs<dim> &inputs)
-    : GhostStabilisation(inputs.parameters.stabilisation,
-                         inputs.grid,
-                         inputs.parameters.bodies)
+    : GhostStabilisation(
+        [&inputs]() {
+          Parameters::Stabilisation parameters;
+          parameters.parse_parameters(inputs.prm);
+          return parameters;
+        }(),
+        inputs.grid,
+        inputs.parameters.bodies)
   {}
 
 
@@ -351,6 +396,8 @@ namespace impm
 
   IMPM_REGISTER_COUPLING(GhostStabilisation,
                          "Ghost stabilisation",
-                         inputs.parameters.stabilisation.enabled,
-                         nullptr)
+                         inputs.prm.get_bool("Enabled"),
+                         ([](ParameterHandler &prm) {
+                           Parameters::Stabilisation::declare_parameters(prm);
+                         }))
 } // namespace impm

@@ -349,77 +349,6 @@ namespace impm
 
 
 
-    void
-    Stabilisation::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Ghost stabilisation");
-      prm.declare_entry("Enabled",
-                        "true",
-                        Patterns::Bool(),
-                        "Penalise the jump of the normal gradient of the "
-                        "displacement increment across faces between two "
-                        "cells in the system when one of them is filled "
-                        "to less than 'Fill threshold', so that a node fed "
-                        "only by the edge of a point's domain cannot make "
-                        "the system singular.");
-      prm.declare_entry("Penalty scale",
-                        "0.01",
-                        Patterns::Double(0.),
-                        "gamma >= 0: the face penalty is gamma E h times the "
-                        "integral of the products of the jumps.");
-      prm.declare_entry("Fill threshold",
-                        "0.9",
-                        Patterns::Double(0., 10.),
-                        "Cells whose points' current volume is less than "
-                        "this fraction of the cell's volume are treated as "
-                        "partly filled (0 to 10).");
-      prm.leave_subsection();
-    }
-
-    void
-    Stabilisation::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Ghost stabilisation");
-      enabled        = prm.get_bool("Enabled");
-      penalty_scale  = prm.get_double("Penalty scale");
-      fill_threshold = prm.get_double("Fill threshold");
-      prm.leave_subsection();
-    }
-
-
-
-    void
-    Checkpoint::declare_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Checkpoint");
-      prm.declare_entry("Interval",
-                        "0",
-                        Patterns::Integer(0),
-                        "Save the run's state in the output directory "
-                        "(checkpoint/) every this many converged load "
-                        "steps, so that 'impm SCENE --resume' can continue "
-                        "it (0: never; >= 0). A run also saves and stops on "
-                        "SIGTERM or SIGUSR1.");
-      prm.declare_entry("Wall time limit",
-                        "0",
-                        Patterns::Double(0.),
-                        "Save and stop after the first load step that ends "
-                        "later than this many seconds after the start (for "
-                        "batch jobs with a time limit; 0: none; >= 0).");
-      prm.leave_subsection();
-    }
-
-    void
-    Checkpoint::parse_parameters(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Checkpoint");
-      interval        = prm.get_integer("Interval");
-      wall_time_limit = prm.get_double("Wall time limit");
-      prm.leave_subsection();
-    }
-
-
-
     template <int dim>
     void
     All<dim>::parse_parameters(ParameterHandler &prm)
@@ -440,11 +369,6 @@ namespace impm
       for (unsigned int d = 0; d < dim; ++d)
         gravity[d] = g[d];
       prm.leave_subsection();
-      solver.parse_parameters(prm);
-      stabilisation.parse_parameters(prm);
-      output.parse_parameters(prm);
-      checkpoint.parse_parameters(prm);
-      testing.parse_parameters(prm, dim);
     }
 
 
@@ -470,11 +394,6 @@ namespace impm
       impm::RigidBody<2>::declare_parameters(prm);
       MaterialPoints::declare_parameters(prm);
       EffectRegistry::declare_parameters(prm);
-      Solver::declare_parameters(prm);
-      Stabilisation::declare_parameters(prm);
-      Output::declare_parameters(prm);
-      Checkpoint::declare_parameters(prm);
-      Testing::declare_parameters(prm);
     }
 
 

@@ -8,7 +8,7 @@ namespace impm
 {
   template <int dim>
   std::vector<std::string>
-  Coupling<dim>::notes(const Parameters::Solver &) const
+  Coupling<dim>::notes(const Parameters::LinearSolverType) const
   {
     return {};
   }

@@ -10,6 +10,46 @@
 
 namespace impm
 {
+  namespace Parameters
+  {
+    using namespace dealii;
+
+
+    void
+    Checkpoint::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Checkpoint");
+      prm.declare_entry("Interval",
+                        "0",
+                        Patterns::Integer(0),
+                        "Save the run's state in the output directory "
+                        "(checkpoint/) every this many converged load "
+                        "steps, so that 'impm SCENE --resume' can continue "
+                        "it (0: never; >= 0). A run also saves and stops on "
+                        "SIGTERM or SIGUSR1.");
+      prm.declare_entry("Wall time limit",
+                        "0",
+                        Patterns::Double(0.),
+                        "Save and stop after the first load step that ends "
+                        "later than this many seconds after the start (for "
+                        "batch jobs with a time limit; 0: none; >= 0).");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Checkpoint::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Checkpoint");
+      interval        = prm.get_integer("Interval");
+      wall_time_limit = prm.get_double("Wall time limit");
+      prm.leave_subsection();
+    }
+  } // namespace Parameters
+
+
+
   namespace fs = std::filesystem;
 
   namespace

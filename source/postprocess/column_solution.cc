@@ -111,6 +111,6 @@ namespace impm
   template class ColumnSolution<3>;
   IMPM_REGISTER_POSTPROCESSOR(ColumnSolution,
                               "column solution",
-                              context.parameters.output.analytical_solution ==
+                              context.output.analytical_solution ==
                                 impm::Parameters::AnalyticalSolution::column)
 } // namespace impm

@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <impm/core/parameters.h>
+#include <impm/postprocess/output_parameters.h>
 
 #include <algorithm>
 

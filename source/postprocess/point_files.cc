@@ -32,10 +32,10 @@ namespace impm
       explicit PointFiles(const RunContext<dim> &context)
         : output(context.parameters.scene.output_directory,
                  "points",
-                 context.parameters.output.format,
+                 context.output.format,
                  context.communicator)
       {
-        const auto &fields = context.parameters.output.fields;
+        const auto &fields = context.output.fields;
         const auto &layout = context.material_points.layout();
         body = fields.body && layout.body_index() != PointLayout::absent;
         check_declared_names(fields.declared, layout);
@@ -99,7 +99,7 @@ namespace impm
                  const StepRecord      &record,
                  const RunStatistics<dim> &) override
       {
-        const unsigned int interval = context.parameters.output.interval;
+        const unsigned int interval = context.output.interval;
         if (record.converged() &&
             (record.step_number % interval == 0 || record.target == 1.))
           write(context, record.target, record.step_number);
@@ -215,7 +215,7 @@ namespace impm
       {
         TimerOutput::Scope scope(context.timer, "output");
         this->load_factor   = load_factor;
-        const auto  &fields = context.parameters.output.fields;
+        const auto  &fields = context.output.fields;
         const auto  &points = context.material_points;
         const double this_rank =
           Utilities::MPI::this_mpi_process(context.communicator);
@@ -274,5 +274,5 @@ namespace impm
   } // namespace
   IMPM_REGISTER_POSTPROCESSOR(PointFiles,
                               "point files",
-                              context.parameters.output.interval > 0)
+                              context.output.interval > 0)
 } // namespace impm

@@ -214,11 +214,33 @@ namespace impm
     : context(run_context)
   {
     for (const auto &entry : PostprocessorList<dim>::entries())
-      if (auto postprocessor = entry.create(context))
-        postprocessors.push_back(std::move(postprocessor));
+      {
+        if (entry.declare_parameters)
+          context.prm.enter_subsection(entry.name);
+        auto postprocessor = entry.create(context);
+        if (entry.declare_parameters)
+          context.prm.leave_subsection();
+        if (postprocessor)
+          postprocessors.push_back(std::move(postprocessor));
+      }
     for (const auto &postprocessor : postprocessors)
       for (const std::string &column : postprocessor->step_measure_columns())
         context.step_measure_columns.push_back(column);
+  }
+
+
+
+  template <int dim>
+  void
+  PostprocessorManager<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    for (const auto &entry : PostprocessorList<dim>::entries())
+      if (entry.declare_parameters)
+        {
+          prm.enter_subsection(entry.name);
+          entry.declare_parameters(prm);
+          prm.leave_subsection();
+        }
   }
 
 

@@ -70,7 +70,7 @@ namespace impm
              << ",\n"
              << "  \"system_dofs_last_step\": "
              << statistics.system_dofs_last_step << ",\n"
-             << "  \"load_steps\": " << parameters.solver.n_load_steps << ",\n"
+             << "  \"load_steps\": " << context.solver.n_load_steps << ",\n"
              << "  \"newton_iterations\": "
              << statistics.total_newton_iterations << ",\n";
         for (const StepMeasure &measure : statistics.last_measures)
@@ -86,7 +86,7 @@ namespace impm
              << statistics.final_state.max_tensile_vertical_stress << ",\n"
              << "  \"total_mass\": " << statistics.final_state.total_mass
              << ",\n";
-        if (parameters.solver.estimate_condition)
+        if (context.solver.estimate_condition)
           json << "  \"worst_condition_estimate\": "
                << statistics.worst_condition << ",\n"
                << "  \"smallest_reciprocal_condition_estimate\": "
@@ -96,7 +96,7 @@ namespace impm
                << ",\n";
         json << "  \"formulation\": \""
              << Parameters::formulation_names[static_cast<unsigned int>(
-                  parameters.solver.formulation)]
+                  context.solver.formulation)]
              << "\",\n"
              << "  \"residual_evaluations\": "
              << statistics.residual_evaluations << ",\n"

@@ -37,7 +37,7 @@ namespace impm
                  const StepRecord      &record,
                  const RunStatistics<dim> &) override
       {
-        if (context.parameters.testing.enabled)
+        if (context.testing.enabled)
           log_lines.push_back(record.log_line(scales(context)));
         else if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
           std::cout << record.log_line() << "  residual " << std::scientific
@@ -49,14 +49,13 @@ namespace impm
       finish(const RunContext<dim>    &context,
              const RunStatistics<dim> &statistics) override
       {
-        if (!context.parameters.testing.enabled)
+        if (!context.testing.enabled)
           return;
-        const auto   points = printed_points(context);
-        const double deviation =
-          context.parameters.output.analytical_solution ==
-              Parameters::AnalyticalSolution::column ?
-            ColumnSolution<dim>::max_deviation(context) :
-            -1.;
+        const auto   points    = printed_points(context);
+        const double deviation = context.output.analytical_solution ==
+                                     Parameters::AnalyticalSolution::column ?
+                                   ColumnSolution<dim>::max_deviation(context) :
+                                   -1.;
         if (Utilities::MPI::this_mpi_process(context.communicator) != 0)
           return;
         print_run(context, statistics, deviation);
@@ -70,7 +69,7 @@ namespace impm
       static MeasureScales
       scales(const RunContext<dim> &context)
       {
-        const auto &testing = context.parameters.testing;
+        const auto &testing = context.testing;
         return {testing.reference_length,
                 testing.reference_stress * std::pow(testing.reference_length,
                                                     static_cast<int>(dim) - 1)};
@@ -107,7 +106,7 @@ namespace impm
     std::vector<PointValues>
     TerminalOutput<dim>::printed_points(const RunContext<dim> &context) const
     {
-      const auto              &testing = context.parameters.testing;
+      const auto              &testing = context.testing;
       std::vector<PointValues> local;
       for (const auto &point : context.material_points.particles())
         {
@@ -223,14 +222,14 @@ namespace impm
     {
       const auto  &parameters = context.parameters;
       const auto  &state      = statistics.final_state;
-      const double length     = parameters.testing.reference_length;
-      const double stress     = parameters.testing.reference_stress;
+      const double length     = context.testing.reference_length;
+      const double stress     = context.testing.reference_stress;
       const double force      = scales(context).force;
       for (const auto &line : log_lines)
         std::cout << line << '\n';
       // No pair of residuals near the solution (a step converged in one or
       // two iterations, or at round-off) leaves the order unmeasured.
-      const double minimum_order = parameters.testing.minimum_newton_order;
+      const double minimum_order = context.testing.minimum_newton_order;
       std::cout << "observed Newton order near the solution >= "
                 << minimum_order << " in every step"
                 << (context.couplings.template find<RigidContact<dim>>() !=
@@ -244,7 +243,7 @@ namespace impm
                     statistics.min_newton_order >= minimum_order ? "yes" :
                                                                    "NO")
                 << '\n';
-      const auto &testing = parameters.testing;
+      const auto &testing = context.testing;
       if (testing.check_tangent)
         std::cout
           << "every assembled matrix agrees with central differences "
@@ -332,7 +331,7 @@ namespace impm
                         column_deviation);
           std::cout << buffer;
         }
-      if (parameters.solver.estimate_condition)
+      if (context.solver.estimate_condition)
         {
           std::snprintf(buffer,
                         sizeof(buffer),
@@ -361,7 +360,7 @@ namespace impm
       const RunContext<dim>          &context,
       const std::vector<PointValues> &points) const
     {
-      const auto  &testing = context.parameters.testing;
+      const auto  &testing = context.testing;
       const int    digits  = testing.significant_digits;
       const double length  = testing.reference_length;
       const double stress  = testing.reference_stress;

@@ -54,10 +54,10 @@ namespace impm
      */
     template <int dim>
     Parameters::Solver
-    linear_solver_parameters(const Parameters::All<dim> &parameters,
-                             const Couplings<dim>       &couplings)
+    linear_solver_parameters(const Parameters::Solver &parameters,
+                             const Couplings<dim>     &couplings)
     {
-      Parameters::Solver solver = parameters.solver;
+      Parameters::Solver solver = parameters;
       if (couplings.need_direct_solver() &&
           solver.linear_solver == Parameters::LinearSolverType::automatic)
         solver.linear_solver = Parameters::LinearSolverType::direct;
@@ -78,18 +78,20 @@ namespace impm
 
   template <int dim>
   MPMSolver<dim>::MPMSolver(
-    const Parameters::All<dim>                    &parameters,
+    const RunParameters<dim>                      &settings,
     ParameterHandler                              &prm,
     std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects,
     const MPI_Comm                                 communicator,
     const RunState                                *resume_state,
     const std::string                             &checkpoint_grid)
-    : parameters(parameters)
+    : settings(settings)
+    , prm(prm)
+    , parameters(settings.scene)
     , force_effects(std::move(force_effects))
     , communicator(communicator)
     , pcout(std::cout,
             Utilities::MPI::this_mpi_process(communicator) == 0 &&
-              !parameters.testing.enabled)
+              !settings.testing.enabled)
     , root_out(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , grid(parameters.grid, communicator, checkpoint_grid)
@@ -101,16 +103,16 @@ namespace impm
                       resume_state,
                       couplings.point_fields())
     , system(grid, communicator)
-    , assembler(Assembler<dim>::create(parameters.solver.formulation,
+    , assembler(Assembler<dim>::create(settings.solver.formulation,
                                        material_points,
                                        system,
                                        this->force_effects,
                                        couplings.volume_coupling(),
                                        communicator))
-    , linear_solver(
-        LinearSolver::create(linear_solver_parameters(parameters, couplings)))
+    , linear_solver(LinearSolver::create(
+        linear_solver_parameters(settings.solver, couplings)))
     , problem(grid, system, *assembler, couplings, *linear_solver, timer)
-    , newton_solver(parameters.solver)
+    , newton_solver(settings.solver)
     , resume_state(resume_state)
   {
     SceneChecks::check_supports(parameters, [this](const unsigned int c) {
@@ -119,7 +121,7 @@ namespace impm
           return true;
       return false;
     });
-    problem.check_tangents(parameters.testing.check_tangent);
+    problem.check_tangents(settings.testing.check_tangent);
     for (const auto &coupling : couplings.list())
       if (resume_state == nullptr)
         coupling->check_start(material_points);
@@ -146,7 +148,7 @@ namespace impm
     wall_timer.start();
     start_run();
 
-    LoadStepControl control(parameters.solver);
+    LoadStepControl control(settings.solver);
     if (resume_state)
       control.load(*resume_state);
     bool new_state = true;
@@ -167,15 +169,15 @@ namespace impm
           continue;
         const std::string stop = reason_to_stop(wall_timer.wall_time());
         if (!stop.empty() ||
-            (parameters.checkpoint.interval > 0 &&
-             record.step_number % parameters.checkpoint.interval == 0))
+            (settings.checkpoint.interval > 0 &&
+             record.step_number % settings.checkpoint.interval == 0))
           write_checkpoint(control, record.step_number, wall_timer.wall_time());
         if (!stop.empty())
           {
             root_out << "Stopped after load step " << record.step_number << " ("
                      << stop << "); a checkpoint is written: continue with "
                      << "impm SCENE --resume." << std::endl;
-            if (!parameters.testing.enabled)
+            if (!settings.testing.enabled)
               timer.print_summary();
             return;
           }
@@ -185,7 +187,7 @@ namespace impm
             root_out << "Stopped after load step " << record.step_number
                      << " (--stop-after-step); no summary is written."
                      << std::endl;
-            if (!parameters.testing.enabled)
+            if (!settings.testing.enabled)
               timer.print_summary();
             return;
           }
@@ -198,7 +200,7 @@ namespace impm
         !statistics.empty())
       pcout << statistics << std::endl;
     postprocessors->finish(wall_timer.wall_time());
-    if (!parameters.testing.enabled)
+    if (!settings.testing.enabled)
       timer.print_summary();
   }
 
@@ -245,9 +247,8 @@ namespace impm
     // the whole cell; standard MPM: the point starts at the centre), which
     // leave a cell's hourglass displacements without stiffness, and GMRES
     // with AMG stalls on the system.
-    if (parameters.solver.linear_solver !=
-          Parameters::LinearSolverType::direct &&
-        parameters.solver.linear_solver != Parameters::LinearSolverType::mumps)
+    if (settings.solver.linear_solver != Parameters::LinearSolverType::direct &&
+        settings.solver.linear_solver != Parameters::LinearSolverType::mumps)
       for (const auto &body : parameters.bodies)
         if (body.points_per_direction == 1)
           pcout << "  note: " << body.name
@@ -256,7 +257,8 @@ namespace impm
                    "may not converge; use 2 or more points per cell "
                    "direction or 'Solver/Linear solver = direct'\n";
     for (const auto &coupling : couplings.list())
-      for (const std::string &note : coupling->notes(parameters.solver))
+      for (const std::string &note :
+           coupling->notes(settings.solver.linear_solver))
         pcout << "  note: " << note << '\n';
     pcout << "  effects:\n";
     for (const auto &effect : effect_descriptions)
@@ -271,13 +273,17 @@ namespace impm
 
     postprocessors = std::make_unique<PostprocessorManager<dim>>(
       RunContext<dim>{parameters,
+                      settings.solver,
+                      settings.output,
+                      settings.testing,
                       grid,
                       material_points,
                       effect_descriptions,
                       !force_effects.empty(),
                       timer,
                       communicator,
-                      couplings});
+                      couplings,
+                      prm});
     if (resume_state)
       postprocessors->resume(*resume_state);
     else
@@ -296,7 +302,7 @@ namespace impm
       return "SIGTERM";
     if (signal == SIGUSR1)
       return "SIGUSR1";
-    const double limit = parameters.checkpoint.wall_time_limit;
+    const double limit = settings.checkpoint.wall_time_limit;
     if (limit > 0. && Utilities::MPI::max(elapsed, communicator) > limit)
       return "'Checkpoint/Wall time limit' = " + std::to_string(limit) +
              " s passed";
@@ -470,14 +476,15 @@ namespace impm
             const RunOptions &options,
             const MPI_Comm    communicator)
   {
-    Parameters::All<dim> parameters;
-    parameters.parse_parameters(prm);
+    RunParameters<dim> settings;
+    settings.parse_parameters(prm);
+    Parameters::All<dim> &parameters = settings.scene;
     parameters.scene.file            = options.scene_file;
     parameters.scene.stop_after_step = options.stop_after_step;
     SceneChecks::check(parameters, communicator);
     if (!options.resume)
       {
-        MPMSolver<dim> solver(parameters,
+        MPMSolver<dim> solver(settings,
                               prm,
                               EffectRegistry::create_enabled<dim>(prm),
                               communicator);
@@ -493,7 +500,7 @@ namespace impm
                        parameters.scene.output_directory + "' is of scene '" +
                        state.get_string("scene.name") + "', not '" +
                        parameters.scene.name + "'.");
-    MPMSolver<dim> solver(parameters,
+    MPMSolver<dim> solver(settings,
                           prm,
                           EffectRegistry::create_enabled<dim>(prm),
                           communicator,

@@ -1,5 +1,5 @@
 #include <impm/base/errors.h>
-#include <impm/core/parameters.h>
+#include <impm/solver/solver_parameters.h>
 
 // The scene's 'Solver' section: load stepping, Newton and the linear solver.
 namespace impm

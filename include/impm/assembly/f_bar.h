@@ -151,7 +151,7 @@ namespace impm
     /** @brief With pressure unknowns, what the linear solver does with
      *  them. */
     std::vector<std::string>
-    notes(const Parameters::Solver &solver) const override;
+    notes(const Parameters::LinearSolverType linear_solver) const override;
 
     /** @brief description(). */
     std::vector<std::string>

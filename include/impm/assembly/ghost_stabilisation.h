@@ -15,6 +15,33 @@
 
 namespace impm
 {
+  namespace Parameters
+  {
+    /**
+     * @brief Ghost stabilisation: a penalty on the jump of the normal
+     * gradient of the displacement increment across the faces of cells that
+     * material barely fills (Burman's ghost penalty, as used for implicit MPM
+     * by Coombs).
+     */
+    struct Stabilisation
+    {
+      /** Whether the penalty is applied. */
+      bool enabled;
+      /** Dimensionless penalty scale gamma (penalty = gamma E h). */
+      double penalty_scale;
+      /** Cells filled to less than this volume fraction are stabilised. */
+      double fill_threshold;
+
+      /** @brief Declare the entries in the current subsection ("Ghost
+       *  stabilisation", entered by Couplings::declare_parameters()). */
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /** @brief Read them from the current subsection. */
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace Parameters
+
   using namespace dealii;
 
   /**
@@ -129,8 +156,8 @@ namespace impm
     description() const;
 
   private:
-    const Parameters::Stabilisation &parameters;
-    const BackgroundGrid<dim>       &grid;
+    const Parameters::Stabilisation parameters;
+    const BackgroundGrid<dim>      &grid;
     /** The largest Young's modulus of the bodies. */
     double                   modulus = 0.;
     std::vector<FacePenalty> face_penalties;

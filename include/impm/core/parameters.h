@@ -274,179 +274,16 @@ namespace impm
       parse_parameters(ParameterHandler &prm);
     };
 
-    /** @brief Load stepping, Newton and the linear solver. */
-    struct Solver
-    {
-      /** Previously converged (eq. 9-10) or updated Lagrangian (eq. 7-8,
-       * with mapped derivatives): the same iterates, different cost. */
-      Formulation formulation;
-      /** Number of equal load steps. */
-      unsigned int n_load_steps;
-      /** Convergence when |r| / |f_ext| falls below this. */
-      double tolerance;
-      /** Newton also converges when the residual norm falls below this
-       *  (N; 0: off). */
-      double absolute_tolerance = 0.;
-      /** Newton iterations allowed per load step. */
-      unsigned int max_iterations;
-      /** Direct (Amesos KLU) or GMRES with AMG (Trilinos ML). */
-      LinearSolverType linear_solver;
-      /** Relative tolerance of the iterative linear solver. */
-      double linear_tolerance;
-      /** Iterations allowed to the iterative linear solver per solve. */
-      unsigned int linear_iterations;
-      /** Tie the linear tolerance to the Newton residual. */
-      bool adaptive_linear_tolerance;
-      /** The loosest linear tolerance the adaptive choice gives. */
-      double largest_linear_tolerance;
-      /** Keep the AMG hierarchy while the Krylov iterations stay below this
-       *  factor times those right after it was built (0: never keep). */
-      double amg_reuse_factor;
-      /** ML's aggregation threshold (the connections weaker than this
-       *  fraction of the diagonal are dropped before aggregation). */
-      double amg_aggregation_threshold;
-      /** ML coarsens until a level has at most this many rows and solves
-       *  that level directly. */
-      unsigned int amg_coarse_size;
-      /** 'automatic': the largest system whose failed GMRES solve KLU
-       *  repeats (0: none). */
-      unsigned int direct_rescue_size;
-      /** Cut failed load steps and grow easy ones (else a failure stops). */
-      bool step_control;
-      /** Smallest load increment, as a fraction of the total load. */
-      double minimum_step;
-      /** A step has failed when the residual exceeds this times its first. */
-      double divergence_factor;
-      /** A step that needs at most this many iterations may grow the next. */
-      unsigned int easy_iterations;
-      /** Largest point displacement of one step, in cells (step control). */
-      double maximum_point_increment;
-      /** Estimate the condition number of each step's first matrix. */
-      bool estimate_condition;
 
-      /** @brief Declare the entries in subsection "Solver". */
-      static void
-      declare_parameters(ParameterHandler &prm);
-      /** @brief Read them. */
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
 
     /**
-     * @brief Ghost stabilisation: a penalty on the jump of the normal
-     * gradient of the displacement increment across the faces of cells that
-     * material barely fills (Burman's ghost penalty, as used for implicit MPM
-     * by Coombs).
+     * @brief The scene's description: what it holds and where (the grid,
+     * the bodies, the rigid bodies, the material points, gravity). How it
+     * is solved, written and tested is parsed by the modules that do it
+     * (Parameters::Solver, Output, Testing, Checkpoint; the couplings and
+     * effects their own subsections), all declared by
+     * declare_run_parameters() (simulator/run.h).
      */
-    struct Stabilisation
-    {
-      /** Whether the penalty is applied. */
-      bool enabled;
-      /** Dimensionless penalty scale gamma (penalty = gamma E h). */
-      double penalty_scale;
-      /** Cells filled to less than this volume fraction are stabilised. */
-      double fill_threshold;
-
-      /** @brief Declare the entries in subsection "Ghost stabilisation". */
-      static void
-      declare_parameters(ParameterHandler &prm);
-      /** @brief Read them. */
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** @brief What is written, and how often. */
-    struct Output
-    {
-      /** Write point files every this many load steps (0: never). */
-      unsigned int interval;
-      /** The point files' format. */
-      PointFileFormat format;
-      /** Compare with this analytical solution. */
-      AnalyticalSolution analytical_solution;
-      /** @brief The fields written to the point files. */
-      struct Fields
-      {
-        /** Displacement x - X. */
-        bool displacement = true;
-        /** Initial position X. */
-        bool initial_position = true;
-        /** The six Cauchy stress components. */
-        bool stress = true;
-        /** The von Mises equivalent stress. */
-        bool von_mises_stress = true;
-        /** The current volume. */
-        bool volume = true;
-        /** The process that owns the point. */
-        bool rank = true;
-        /** The body (scenes with several bodies only). */
-        bool body = true;
-        /** Every field the materials and couplings declare as written. */
-        bool all_declared = true;
-        /** The declared fields named (checked against the scene's once
-         *  its points are laid out). */
-        std::vector<std::string> declared;
-      } fields;
-
-      /** @brief Declare the entries in subsection "Output". */
-      static void
-      declare_parameters(ParameterHandler &prm);
-      /** @brief Read them. */
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** @brief A deterministic summary for the test suite. */
-    struct Testing
-    {
-      /** Print the test summary instead of the progress and timing. */
-      bool enabled;
-      /** Number of points (by id) whose state is printed at the end. */
-      unsigned int n_printed_points;
-      /** The observed Newton order every step must reach. */
-      double minimum_newton_order;
-      /** Compare every assembled matrix with central differences. */
-      bool check_tangent;
-      /** Significant digits of the printed points' numbers. */
-      unsigned int significant_digits;
-      /** Expected upper corner of the final points' bounding box (empty:
-       * none), e.g. from a run with other settings. */
-      std::vector<double> reference_extent;
-      /** Allowed distance from the reference extent. */
-      double reference_tolerance;
-      /** Length L the test summary divides lengths by (m). */
-      double reference_length;
-      /** Stress S the test summary divides stresses by (Pa). */
-      double reference_stress;
-      /** Points nearest to these initial positions are printed too. */
-      std::vector<std::vector<double>> probes;
-
-      /** @brief Declare the entries in subsection "Testing". */
-      static void
-      declare_parameters(ParameterHandler &prm);
-      /** @brief Read them; positions have @p dimension coordinates. */
-      void
-      parse_parameters(ParameterHandler &prm, const unsigned int dimension);
-    };
-
-    /** @brief When the run saves its state (subsection "Checkpoint"). */
-    struct Checkpoint
-    {
-      /** Save every this many converged load steps (0: never). */
-      unsigned int interval = 0;
-      /** Save and stop once the run has taken this many seconds of wall
-       *  time (0: no limit). */
-      double wall_time_limit = 0.;
-
-      /** @brief Declare the entries in subsection "Checkpoint". */
-      static void
-      declare_parameters(ParameterHandler &prm);
-      /** @brief Read them. */
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
-
-    /** @brief Everything a scene says. */
     template <int dim>
     struct All
     {
@@ -466,16 +303,6 @@ namespace impm
       bool gravity_enabled;
       /** Gravitational acceleration. */
       Tensor<1, dim> gravity;
-      /** Solver. */
-      Solver solver;
-      /** Ghost stabilisation. */
-      Stabilisation stabilisation;
-      /** Output. */
-      Output output;
-      /** Checkpoints. */
-      Checkpoint checkpoint;
-      /** Testing. */
-      Testing testing;
 
       /** @brief Read all subsections. */
       void
@@ -483,8 +310,9 @@ namespace impm
     };
 
     /**
-     * @brief Declare every entry of a scene, for both dimensions (vector
-     * entries are lists whose length is checked against the dimension).
+     * @brief Declare the entries of the scene's description (All) and of
+     * its effects, for both dimensions (vector entries are lists whose
+     * length is checked against the dimension).
      */
     void
     declare_all(ParameterHandler &prm);

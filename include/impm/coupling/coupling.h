@@ -146,10 +146,10 @@ namespace impm
     virtual std::vector<std::string>
     descriptions() const = 0;
 
-    /** @brief Notes for the start-up report on the linear solver
-     *  @p solver (none by default). */
+    /** @brief Notes for the start-up report on the scene's linear solver
+     *  @p linear_solver (none by default). */
     virtual std::vector<std::string>
-    notes(const Parameters::Solver &solver) const;
+    notes(const Parameters::LinearSolverType linear_solver) const;
 
     /** @brief Whether the linear systems need a direct solver (what
      *  'automatic' then chooses). */

@@ -1,6 +1,8 @@
 #ifndef impm_io_checkpoint_h
 #define impm_io_checkpoint_h
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <impm/io/run_state.h>
 
 #include <mpi.h>
@@ -10,6 +12,26 @@
 
 namespace impm
 {
+  namespace Parameters
+  {
+    /** @brief When the run saves its state (subsection "Checkpoint"). */
+    struct Checkpoint
+    {
+      /** Save every this many converged load steps (0: never). */
+      unsigned int interval = 0;
+      /** Save and stop once the run has taken this many seconds of wall
+       *  time (0: no limit). */
+      double wall_time_limit = 0.;
+
+      /** @brief Declare the entries in subsection "Checkpoint". */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+      /** @brief Read them. */
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+    };
+  } // namespace Parameters
+
   /**
    * @brief The checkpoints of a run in its output directory.
    *

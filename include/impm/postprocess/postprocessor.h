@@ -10,7 +10,9 @@
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
+#include <impm/postprocess/output_parameters.h>
 #include <impm/solver/newton_solver.h>
+#include <impm/solver/solver_parameters.h>
 
 #include <memory>
 #include <string>
@@ -38,8 +40,14 @@ namespace impm
   template <int dim>
   struct RunContext
   {
-    /** The scene. */
+    /** The scene's description. */
     const Parameters::All<dim> &parameters;
+    /** The solver's parameters. */
+    const Parameters::Solver &solver;
+    /** What is written, and how often. */
+    const Parameters::Output &output;
+    /** The test summary's settings. */
+    const Parameters::Testing &testing;
     /** The background grid (DoFs, face conditions). */
     const BackgroundGrid<dim> &grid;
     /** The material points in their current state. */
@@ -54,6 +62,10 @@ namespace impm
     const MPI_Comm communicator;
     /** The scene's couplings (Couplings::find() finds one by type). */
     const Couplings<dim> &couplings;
+    /** The scene's parameter file: a postprocessor registered with a
+     *  declaration (IMPM_REGISTER_POSTPROCESSOR_WITH_PARAMETERS) reads its
+     *  own subsection, which is entered while it is created. */
+    ParameterHandler &prm;
     /** The columns of StepMeasure values (set by the PostprocessorManager
      *  from all postprocessors' step_measure_columns()). */
     std::vector<std::string> step_measure_columns = {};
@@ -246,6 +258,13 @@ namespace impm
     /** @brief Create every postprocessor the scene of @p context asks for. */
     explicit PostprocessorManager(const RunContext<dim> &context);
 
+    /**
+     * @brief Declare the subsection of every postprocessor registered with
+     * parameters, named after it.
+     */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
     /** @brief See Postprocessor::start(). */
     void
     start();
@@ -280,12 +299,24 @@ namespace impm
  * by default) as postprocessor @p NAME, created when @p WANTED (an
  * expression of `const RunContext<dim> &context`) holds.
  */
-#define IMPM_REGISTER_POSTPROCESSOR(CLASS, NAME, WANTED)                    \
+#define IMPM_REGISTER_POSTPROCESSOR(CLASS, NAME, WANTED) \
+  IMPM_REGISTER_POSTPROCESSOR_WITH_PARAMETERS(CLASS, NAME, WANTED, {})
+
+/**
+ * As IMPM_REGISTER_POSTPROCESSOR, with @p DECLARE (a function of
+ * `ParameterHandler &`) declaring the entries of its own subsection @p NAME;
+ * that subsection is entered while @p WANTED is evaluated and @p CLASS is
+ * constructed, so both read it through `context.prm`.
+ */
+#define IMPM_REGISTER_POSTPROCESSOR_WITH_PARAMETERS(CLASS,                  \
+                                                    NAME,                   \
+                                                    WANTED,                 \
+                                                    DECLARE)                \
   IMPM_REGISTER_PLUGIN_IN_BOTH_DIMENSIONS(                                  \
     impm::PostprocessorList,                                                \
     CLASS,                                                                  \
     NAME,                                                                   \
-    {},                                                                     \
+    DECLARE,                                                                \
     ([](const impm::RunContext<dim> &context)                               \
        -> std::unique_ptr<impm::Postprocessor<dim>> {                       \
       if (!(WANTED))                                                        \

@@ -14,6 +14,7 @@
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
 #include <impm/postprocess/postprocessor.h>
+#include <impm/simulator/run.h>
 #include <impm/solver/linear_solver.h>
 #include <impm/solver/load_step_control.h>
 #include <impm/solver/load_step_problem.h>
@@ -49,7 +50,8 @@ namespace impm
   public:
     /**
      * @brief Set up the grid, the points and the solvers of a scene.
-     * @param parameters The scene (with its bodies and their materials).
+     * @param settings The scene (with its bodies and their materials) and
+     *   the modules' parameters (solver, output, testing, checkpoints).
      * @param prm The scene's parameter file (the couplings read their
      *   subsections).
      * @param force_effects The loads the scene enables.
@@ -58,7 +60,7 @@ namespace impm
      *   continue from, whose grid and points are in @p checkpoint_grid.
      * @param checkpoint_grid The checkpoint's grid file.
      */
-    MPMSolver(const Parameters::All<dim>                    &parameters,
+    MPMSolver(const RunParameters<dim>                      &settings,
               ParameterHandler                              &prm,
               std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects,
               const MPI_Comm                                 communicator,
@@ -111,6 +113,12 @@ namespace impm
     std::string
     reason_to_stop(const double elapsed) const;
 
+    /** The modules' parameters. */
+    const RunParameters<dim> &settings;
+    /** The scene's parameter file (postprocessors read their subsections
+     *  when the run starts). */
+    ParameterHandler &prm;
+    /** The scene's description (settings.scene). */
     const Parameters::All<dim>                          &parameters;
     const std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects;
     const MPI_Comm                                       communicator;

@@ -4,6 +4,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <impm/core/parameters.h>
+#include <impm/io/checkpoint.h>
+#include <impm/postprocess/output_parameters.h>
+#include <impm/solver/solver_parameters.h>
+
 #include <string>
 
 namespace impm
@@ -21,6 +26,47 @@ namespace impm
     /** Continue from the newest checkpoint in the output directory. */
     bool resume = false;
   };
+
+  /**
+   * @brief Everything a scene file says, parsed by the module it belongs
+   * to: the scene's description (the grid, bodies, rigid bodies, material
+   * points and gravity, in core/), how it is solved (solver/), written and
+   * tested (postprocess/) and checkpointed (io/). The couplings and effects
+   * parse their own subsections when they are created.
+   */
+  template <int dim>
+  struct RunParameters
+  {
+    /** The scene's description. */
+    Parameters::All<dim> scene;
+    /** The subsection "Solver". */
+    Parameters::Solver solver;
+    /** The subsection "Output". */
+    Parameters::Output output;
+    /** The subsection "Testing". */
+    Parameters::Testing testing;
+    /** The subsection "Checkpoint". */
+    Parameters::Checkpoint checkpoint;
+
+    /** @brief Read every module's subsections. */
+    void
+    parse_parameters(dealii::ParameterHandler &prm)
+    {
+      scene.parse_parameters(prm);
+      solver.parse_parameters(prm);
+      output.parse_parameters(prm);
+      testing.parse_parameters(prm, dim);
+      checkpoint.parse_parameters(prm);
+    }
+  };
+
+  /**
+   * @brief Declare every entry a scene may set: each module declares its
+   * own (the scene's description, the solver, the output, the testing, the
+   * checkpoints, the couplings and the effects).
+   */
+  void
+  declare_run_parameters(dealii::ParameterHandler &prm);
 
   /**
    * @brief Run the scene held by @p prm (already parsed) in dimension

@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <impm/core/parameters.h>
+#include <impm/solver/solver_parameters.h>
 #include <impm/system/near_null_space.h>
 
 #include <memory>

@@ -4,6 +4,7 @@
 #include <impm/core/parameters.h>
 #include <impm/io/run_state.h>
 #include <impm/solver/newton_solver.h>
+#include <impm/solver/solver_parameters.h>
 
 #include <sstream>
 

@@ -3,6 +3,7 @@
 
 #include <impm/core/parameters.h>
 #include <impm/solver/linear_solver.h>
+#include <impm/solver/solver_parameters.h>
 
 #include <array>
 #include <limits>

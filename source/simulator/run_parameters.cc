@@ -1,0 +1,19 @@
+// declare_run_parameters(): every module declares the entries it reads.
+#include <impm/coupling/coupling.h>
+#include <impm/postprocess/postprocessor.h>
+#include <impm/simulator/run.h>
+
+namespace impm
+{
+  void
+  declare_run_parameters(dealii::ParameterHandler &prm)
+  {
+    Parameters::declare_all(prm);
+    Parameters::Solver::declare_parameters(prm);
+    Parameters::Output::declare_parameters(prm);
+    Parameters::Testing::declare_parameters(prm);
+    Parameters::Checkpoint::declare_parameters(prm);
+    Couplings<2>::declare_parameters(prm);
+    PostprocessorManager<2>::declare_parameters(prm);
+  }
+} // namespace impm
