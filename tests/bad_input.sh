@@ -218,6 +218,11 @@ expect resume_without_checkpoint "--resume: the output directory 'results' holds
 expect stop_after_zero_steps "--stop-after-step '0': expected a number of load steps from 1 to 1e9" - -- "$base" --stop-after-step 0
 expect two_scene_files "Only one scene file may be given" - -- "$base" "$base"
 
+# Inertia.
+expect inertia_unstable_newmark "Inertia: Newmark gamma = 0.4 with beta = 0.25 is not unconditionally stable: it needs 0.5 <= gamma <= 4 beta" - -- "$base" --set "Inertia/Enabled=true" --set "Inertia/Newmark gamma=0.4"
+expect inertia_bad_velocity "Parameter 'Inertia/Initial velocity' = 'sin\\(x' is not allowed: it must be 0 or 2 expressions in x, y separated by ';'" - -- "$base" --set "Inertia/Enabled=true" --set "Inertia/Initial velocity=sin(x"
+expect inertia_zero_end_time "Parameter 'Inertia/End time' = '0' is not allowed: it must be > 0" - -- "$base" --set "Inertia/Enabled=true" --set "Inertia/End time=0"
+
 # Declared point state: a field no point stores; a checkpoint resumed into
 # points laid out otherwise (the plastic model's state, then an elastic
 # model without it).

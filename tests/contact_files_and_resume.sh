@@ -21,7 +21,9 @@
 #     summary (the plate's final displacement among it) and steps.csv
 #     (rigid_1_displacement_y in every step) as its uninterrupted run, and
 #     the plate's surface at full load where the unknown put it (y from
-#     0.750002 to 1.000002 m).
+#     0.750002 to 1.000002 m);
+#  5. the Winkler springs' layer stopped after step 1 and resumed: the same
+#     summary (the springs' face displacements came through the checkpoint).
 # Usage: contact_files_and_resume.sh IMPM SCENE [MPIEXEC N]
 # (SCENE: tests/contact_block_sticking.prm)
 scene=$2
@@ -97,4 +99,18 @@ untimed results/steps.csv > pushed_resumed_steps.csv
 compare pushed_full_steps.csv pushed_resumed_steps.csv "steps.csv of the resumed pushed plate differs"
 spans results/rigid_1_00010.vtu 1 0.750002 1.000002 1e-6 ||
   fail "the pushed plate's surface is not where its unknown put it"
+# 5. Winkler springs (tests/winkler_springs_layer.prm, 2 steps): the
+#    springs' face displacements through the checkpoint (lost, the second
+#    step's springs would start unstretched and carry half the weight).
+rm -rf results
+springs=("$here/winkler_springs_layer.prm")
+"$impm" "${springs[@]}" > springs_full.txt 2>&1 || fail "the springs' run failed"
+summary springs_full.txt > springs_full_summary.txt
+rm -rf results
+"$impm" "${springs[@]}" --set "Checkpoint/Interval=1" --stop-after-step 1 \
+  > springs_part1.txt 2>&1 || fail "the springs' first part failed"
+"${launcher[@]}" "$impm" "${springs[@]}" --set "Checkpoint/Interval=1" --resume \
+  > springs_part2.txt 2>&1 || fail "the springs' resumed run failed"
+summary springs_part2.txt > springs_resumed_summary.txt
+compare springs_full_summary.txt springs_resumed_summary.txt "the resumed springs end in another state"
 echo "contact_files_and_resume: passed"

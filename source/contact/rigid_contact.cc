@@ -491,7 +491,8 @@ namespace impm
   template <int dim>
   void
   RigidContact<dim>::accept(MaterialPoints<dim>       &material_points,
-                            const LoadStepSystem<dim> &system)
+                            const LoadStepSystem<dim> &system,
+                            const NodalVector &)
   {
     for (const auto &[body, component] : body_unknowns)
       accepted_unknowns[body][component] = displacement[body][component];

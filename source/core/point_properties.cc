@@ -101,6 +101,17 @@ namespace impm
 
 
 
+  unsigned int
+  PointLayout::coupling_field_entries(const std::string &name) const
+  {
+    for (const auto &[field, first] : couplings)
+      if (field.name == name)
+        return field.n_components;
+    return 0;
+  }
+
+
+
   std::string
   PointLayout::description() const
   {

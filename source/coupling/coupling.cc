@@ -257,7 +257,16 @@ namespace impm
 
   template <int dim>
   void
-  Coupling<dim>::accept(MaterialPoints<dim> &, const LoadStepSystem<dim> &)
+  Coupling<dim>::accept(MaterialPoints<dim> &,
+                        const LoadStepSystem<dim> &,
+                        const NodalVector &)
+  {}
+
+
+
+  template <int dim>
+  void
+  Coupling<dim>::initialize_points(MaterialPoints<dim> &)
   {}
 
 

@@ -213,7 +213,9 @@ namespace impm
       /** @brief Keep each face's displacement (on every process: points
        *  move between them) and sum the springs' force. */
       void
-      accept(MaterialPoints<dim> &, const LoadStepSystem<dim> &) override
+      accept(MaterialPoints<dim> &,
+             const LoadStepSystem<dim> &,
+             const NodalVector &) override
       {
         const MPI_Comm communicator =
           grid.get_triangulation().get_communicator();

@@ -100,6 +100,27 @@ namespace impm
 
   template <int dim>
   void
+  MaterialPoints<dim>::initialize_coupling_field(
+    const std::string                                    &name,
+    const std::function<void(const PointState<dim> &,
+                             const ArrayView<double> &)> &value)
+  {
+    const unsigned int first = property_layout.coupling_field(name);
+    Assert(first != PointLayout::absent, ExcInternalError());
+    const unsigned int n = property_layout.coupling_field_entries(name);
+    for (auto &point : particle_handler)
+      {
+        const auto properties = point.get_properties();
+        value(PointState<dim>(
+                ArrayView<const double>(properties.data(), properties.size())),
+              ArrayView<double>(properties.data() + first, n));
+      }
+  }
+
+
+
+  template <int dim>
+  void
   MaterialPoints<dim>::prepare_for_checkpoint()
   {
     particle_handler.prepare_for_serialization();

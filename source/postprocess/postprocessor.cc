@@ -37,6 +37,8 @@ namespace impm
                               measure.value /
                                 (measure.kind == MeasureKind::force ?
                                    scales->force :
+                                 measure.kind == MeasureKind::energy ?
+                                   scales->energy :
                                    scales->length));
               line << "  " << measure.label << ' ' << buffer;
             }

@@ -71,8 +71,10 @@ namespace impm
       {
         const auto &testing = context.testing;
         return {testing.reference_length,
-                testing.reference_stress * std::pow(testing.reference_length,
-                                                    static_cast<int>(dim) - 1)};
+                testing.reference_stress *
+                  std::pow(testing.reference_length, static_cast<int>(dim) - 1),
+                testing.reference_stress *
+                  std::pow(testing.reference_length, static_cast<int>(dim))};
       }
 
       /** The values of the points to print (on rank 0; collective). */

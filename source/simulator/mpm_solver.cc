@@ -124,7 +124,10 @@ namespace impm
     problem.check_tangents(settings.testing.check_tangent);
     for (const auto &coupling : couplings.list())
       if (resume_state == nullptr)
-        coupling->check_start(material_points);
+        {
+          coupling->check_start(material_points);
+          coupling->initialize_points(material_points);
+        }
       else
         coupling->load(*resume_state);
     if (Utilities::MPI::n_mpi_processes(communicator) > 1)
@@ -409,7 +412,7 @@ namespace impm
   MPMSolver<dim>::accept_load_step(StepRecord &record)
   {
     for (const auto &coupling : couplings.list())
-      coupling->accept(material_points, system);
+      coupling->accept(material_points, system, problem.increment());
     const auto reactions      = problem.reactions();
     record.reactions          = reactions.by_column;
     record.reaction_imbalance = reactions.imbalance;

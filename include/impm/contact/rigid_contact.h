@@ -295,7 +295,8 @@ namespace impm
      */
     void
     accept(MaterialPoints<dim>       &material_points,
-           const LoadStepSystem<dim> &system) override;
+           const LoadStepSystem<dim> &system,
+           const NodalVector         &increment) override;
 
     /** @brief The force of the material on a body, in parts. */
     struct BodyForce

@@ -140,6 +140,10 @@ namespace impm
     unsigned int
     coupling_field(const std::string &name) const;
 
+    /** @brief The entries of the coupling field @p name (0 if none). */
+    unsigned int
+    coupling_field_entries(const std::string &name) const;
+
     /** @brief The fields the point files may write, in declaration order. */
     const std::vector<WrittenField> &
     written_fields() const

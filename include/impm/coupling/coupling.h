@@ -41,6 +41,9 @@ namespace impm
     length,
     /** A count: printed as an integer. */
     count,
+    /** An energy (J; per m of thickness in 2D): printed in S L^dim, to 6
+     *  decimals. */
+    energy,
     /** A dimensionless number: printed as it is, to 5 significant
      *  digits. */
     number
@@ -177,6 +180,11 @@ namespace impm
      *  not resume. Collective. */
     virtual void
     check_start(const MaterialPoints<dim> &material_points) const;
+
+    /** @brief Give the points the initial values of its point_fields() (a
+     *  run that does not resume; after check_start(); zero by default). */
+    virtual void
+    initialize_points(MaterialPoints<dim> &material_points);
 
     /** @brief Save what a resumed run needs into @p state. */
     virtual void
@@ -382,12 +390,13 @@ namespace impm
     /** @name A converged step */
     /** @{ */
 
-    /** @brief Take the converged step: store what it keeps (in the points
-     *  too: its point_fields(), by the points' steps in @p system).
-     *  Collective. */
+    /** @brief Take the converged step, whose displacement increment is
+     *  @p increment (ghosted): store what it keeps (in the points too: its
+     *  point_fields(), by the points' steps in @p system). Collective. */
     virtual void
     accept(MaterialPoints<dim>       &material_points,
-           const LoadStepSystem<dim> &system);
+           const LoadStepSystem<dim> &system,
+           const NodalVector         &increment);
 
     /** @brief The force of the material on what this coupling stands for
      *  (bodies, springs) at the last accepted step, which carries part of

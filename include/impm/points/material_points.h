@@ -13,6 +13,8 @@
 #include <impm/points/point_step.h>
 
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -85,6 +87,17 @@ namespace impm
     set_coupling_field(const std::string         &name,
                        const PointSteps<dim>     &point_steps,
                        const std::vector<double> &values);
+
+    /**
+     * @brief Set the coupling field @p name of every local point to what
+     * @p value writes into its entries, given the point's state (initial
+     * values at the start of a run).
+     */
+    void
+    initialize_coupling_field(
+      const std::string                                    &name,
+      const std::function<void(const PointState<dim> &,
+                               const ArrayView<double> &)> &value);
 
     /**
      * @brief Attach the points to the grid's cells for a checkpoint (call

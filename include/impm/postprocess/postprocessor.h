@@ -82,6 +82,8 @@ namespace impm
     double length;
     /** Forces are printed divided by this (N, per m in 2D). */
     double force;
+    /** Energies are printed divided by this (J, per m in 2D). */
+    double energy;
   };
 
   /** @brief One attempt at a load step. */
