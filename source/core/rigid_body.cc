@@ -15,38 +15,7 @@ namespace impm
     for (unsigned int k = 1; k <= max_rigid_bodies; ++k)
       {
         prm.enter_subsection("Rigid body " + std::to_string(k));
-        Body<dim>::declare_shape_parameters(prm, "|cone|stl");
-        prm.declare_entry("STL file",
-                          "",
-                          Patterns::Anything(),
-                          "stl (3D): a closed, consistently oriented "
-                          "triangulated surface, binary or ASCII STL, "
-                          "coordinates in m; a relative path is relative to "
-                          "the scene file's directory.");
-        prm.declare_entry("Tip",
-                          "0, 0, 0",
-                          Patterns::List(Patterns::Double(), 3, 3),
-                          "Cone (3D): the tip, in m.");
-        prm.declare_entry("Axis",
-                          "0, 0, 1",
-                          Patterns::List(Patterns::Double(), 3, 3),
-                          "Cone: the direction from the tip toward the base "
-                          "(any length > 0).");
-        prm.declare_entry("Cone height",
-                          "1",
-                          Patterns::Double(0.),
-                          "Cone: the height from the tip to the base, in m "
-                          "(> 0).");
-        prm.declare_entry("Cone radius",
-                          "0.5",
-                          Patterns::Double(0.),
-                          "Cone: the radius of the base and the shaft, in m "
-                          "(> 0).");
-        prm.declare_entry("Shaft length",
-                          "0",
-                          Patterns::Double(0.),
-                          "Cone: the length of the cylindrical shaft above "
-                          "the base, in m (>= 0; 0: a cone alone).");
+        RigidShape<dim>::declare_parameters(prm);
         prm.declare_entry("Displacement",
                           "0, 0",
                           Patterns::List(Patterns::Double(), 2, 3),
@@ -153,33 +122,7 @@ namespace impm
   {
     name = "Rigid body " + std::to_string(number);
     prm.enter_subsection(name);
-    outline.name   = name;
-    is_cone        = prm.get("Shape") == "cone";
-    const bool stl = prm.get("Shape") == "stl";
-    if ((is_cone || stl) && dim != 3)
-      Parameters::bad_value(name + "/Shape",
-                            prm.get("Shape"),
-                            std::string(is_cone ? "a cone" : "an STL surface") +
-                              " is 3D (in 2D, a polygon).");
-    if (is_cone)
-      parse_cone(prm);
-    else if (stl)
-      {
-        surface_file = prm.get("STL file");
-        try
-          {
-            surface_mesh =
-              std::make_shared<const TriangulatedSurface>(surface_file);
-          }
-        catch (const std::runtime_error &error)
-          {
-            Parameters::bad_value(name + "/STL file",
-                                  surface_file,
-                                  std::string(error.what()) + ".");
-          }
-      }
-    else
-      outline.parse_shape(prm);
+    shape             = RigidShape<dim>::create(prm, name);
     const auto values = Parameters::get_vector(prm, name, "Displacement", dim);
     for (unsigned int d = 0; d < dim; ++d)
       displacement[d] = values[d];
@@ -283,82 +226,8 @@ namespace impm
                                 "the direction needs a length > 0.");
         rotation_axis /= rotation_axis.norm();
       }
-    using Shape = typename Body<dim>::Shape;
-    if (is_cone || surface_mesh || outline.shape != Shape::box)
-      return;
-    // A box's exact face overlap is for faces parallel to its sides: a
-    // turning box is a polygon or a surface of triangles instead.
-    const Point<dim>       &a = outline.lower_corner, &b = outline.upper_corner;
-    std::vector<Point<dim>> corners;
-    for (unsigned int k = 0; k < (1u << dim); ++k)
-      {
-        Point<dim> corner;
-        for (unsigned int d = 0; d < dim; ++d)
-          corner[d] = (k >> d) & 1 ? b[d] : a[d];
-        corners.push_back(corner);
-      }
-    if constexpr (dim == 2)
-      {
-        outline.shape    = Shape::polygon;
-        outline.vertices = {corners[0], corners[1], corners[3], corners[2]};
-      }
-    else
-      {
-        // The sides as quadrilaterals (all ordered alike), two triangles
-        // each.
-        const std::vector<std::array<unsigned int, 4>> sides = {{{0, 2, 6, 4}},
-                                                                {{1, 5, 7, 3}},
-                                                                {{0, 4, 5, 1}},
-                                                                {{2, 3, 7, 6}},
-                                                                {{0, 1, 3, 2}},
-                                                                {{4, 6, 7, 5}}};
-        std::vector<std::array<unsigned int, 3>>       triangles;
-        for (const auto &side : sides)
-          {
-            triangles.push_back({{side[0], side[1], side[2]}});
-            triangles.push_back({{side[0], side[2], side[3]}});
-          }
-        surface_mesh =
-          std::make_shared<const TriangulatedSurface>(corners, triangles);
-        surface_file = "turning box";
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  RigidBody<dim>::parse_cone(ParameterHandler &prm)
-  {
-    const auto tip  = Parameters::get_vector(prm, name, "Tip", dim);
-    const auto axis = Parameters::get_vector(prm, name, "Axis", dim);
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        cone.tip[d]  = tip[d];
-        cone.axis[d] = axis[d];
-      }
-    if (!(cone.axis.norm() > 0.))
-      Parameters::bad_value(name + "/Axis",
-                            prm.get("Axis"),
-                            "the direction needs a length > 0.");
-    cone.axis /= cone.axis.norm();
-    cone.height       = prm.get_double("Cone height");
-    cone.radius       = prm.get_double("Cone radius");
-    cone.shaft_length = prm.get_double("Shaft length");
-    if (!(cone.height > 0.))
-      Parameters::bad_value(name + "/Cone height",
-                            prm.get("Cone height"),
-                            "it must be > 0.");
-    if (!(cone.radius > 0.))
-      Parameters::bad_value(name + "/Cone radius",
-                            prm.get("Cone radius"),
-                            "it must be > 0.");
-    const double r = cone.radius, h = cone.height, top = h + cone.shaft_length;
-    cone.profile = {Point<2>(0., 0.), Point<2>(r, h)};
-    if (cone.shaft_length > 0.)
-      cone.profile.insert(cone.profile.end(),
-                          {Point<2>(r, top), Point<2>(-r, top)});
-    cone.profile.push_back(Point<2>(-r, h));
+    if (auto turning = shape->turning_form())
+      shape = std::move(turning);
   }
 
 
@@ -368,15 +237,7 @@ namespace impm
   RigidBody<dim>::description() const
   {
     std::ostringstream out;
-    if (surface_mesh)
-      out << name << ": surface '" << surface_file << "' of "
-          << surface_mesh->get_triangles().size() << " triangles";
-    else if (is_cone)
-      out << name << ": cone tip (" << cone.tip << ") axis (" << cone.axis
-          << ") height " << cone.height << " radius " << cone.radius
-          << " shaft " << cone.shaft_length;
-    else
-      out << outline.shape_description();
+    out << name << ": " << shape->description();
     out << ", moved by [" << displacement << "]";
     if (rotates())
       {

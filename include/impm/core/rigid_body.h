@@ -5,11 +5,11 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <impm/core/body.h>
-#include <impm/core/triangulated_surface.h>
+#include <impm/core/rigid_shape.h>
+#include <impm/core/triangulated_surface.h> // still provides it
 
 #include <algorithm>
-#include <limits>
+#include <array>
 #include <memory>
 #include <string>
 #include <utility>
@@ -30,10 +30,12 @@ namespace impm
    * material points with a penalty contact and Coulomb friction
    * (RigidContact).
    *
-   * It knows its geometry: the signed distance of a point from its surface
-   * (negative inside), the outward normal of the nearest surface point and
-   * the derivative of that normal, which the consistent tangent of the
-   * contact needs.
+   * It owns its shape (a RigidShape, made once from the parameters by
+   * RigidShape::create()) and moves and turns it: the signed distance of a
+   * point from its surface (negative inside), the outward normal of the
+   * nearest surface point and the derivative of that normal, which the
+   * consistent tangent of the contact needs, are the shape's at the point
+   * mapped to the body's frame.
    *
    * @tparam dim Space dimension.
    */
@@ -74,49 +76,17 @@ namespace impm
     void
     parse_parameters(ParameterHandler &prm, const unsigned int number);
 
-    /**
-     * @brief Where a point is relative to the surface of the body.
-     */
-    struct Proximity
-    {
-      /** Signed distance from the surface, negative inside. */
-      double gap = std::numeric_limits<double>::max();
-      /** Outward unit normal of the nearest surface point. */
-      Tensor<1, dim> normal;
-      /** The derivative of the normal with respect to the point
-       *  (symmetric; zero on flat parts, (I - n n)/r on a disc or
-       *  sphere of radius r). */
-      Tensor<2, dim> normal_derivative;
-      /** The part of the face (Facing) that presses on the surface, in
-       *  [0, 1]: 1 but where a face overlaps a box's edge. */
-      double overlap = 1.;
-      /** Its derivative with respect to the point. */
-      Tensor<1, dim> overlap_gradient;
-      /** Which piece of the piecewise smooth contact the point is on: the
-       *  side pushing it and, on a box, which of the face's ends lie beyond
-       *  the side's edges (where the overlap's slope changes). A change
-       *  between two evaluations is a change of contact state, like
-       *  entering or leaving contact. */
-      unsigned int piece = 0;
-    };
+    /** @brief Where a point is relative to the surface of the body
+     *  (RigidShape::Proximity). */
+    using Proximity = typename RigidShape<dim>::Proximity;
 
-    /**
-     * @brief A material point's domain face, for proximity(): which sides
-     * of a box or polygon may push it.
-     */
-    struct Facing
-    {
-      /** The face's outward normal. */
-      Tensor<1, dim> normal;
-      /** Its centre at the start of the step, in the body's frame (minus
-       *  the body's displacement at the start of the step). */
-      Point<dim> start;
-      /** How far inside a side's plane the start may lie (the penalty's
-       *  penetration of the step before). */
-      double tolerance = 0.;
-      /** The domain's half-lengths (those along the face count). */
-      Tensor<1, dim> half_length;
-    };
+    /** @brief A material point's domain face, for proximity(): which sides
+     *  of a box or polygon may push it (RigidShape::Facing). */
+    using Facing = typename RigidShape<dim>::Facing;
+
+    /** @brief The body's surface as polygons, for ParaView
+     *  (RigidShape::Surface). */
+    using Surface = typename RigidShape<dim>::Surface;
 
     /**
      * @brief The proximity of @p x to the body displaced by @p
@@ -138,7 +108,11 @@ namespace impm
     Proximity
     proximity(const Point<dim>     &x,
               const Tensor<1, dim> &displacement,
-              const Facing         *facing = nullptr) const;
+              const Facing         *facing = nullptr) const
+    {
+      // Inline: one call (the shape's) per probe.
+      return shape->proximity(x - displacement, facing);
+    }
 
     /**
      * @brief The proximity of @p x to the body displaced by @p displacement
@@ -214,16 +188,6 @@ namespace impm
     bounding_box(const Tensor<1, dim> &displacement,
                  const double          load_factor) const;
 
-    /** @brief The body's surface as polygons, for ParaView. */
-    struct Surface
-    {
-      /** The vertices. */
-      std::vector<Point<dim>> vertices;
-      /** Each face: its vertices' indices in order (in 2D one polygon,
-       *  the body's outline; in 3D quadrilaterals). */
-      std::vector<std::vector<unsigned int>> faces;
-    };
-
     /**
      * @brief The surface of the body displaced by @p displacement: a box's
      * outline or faces, a polygon, and discs and spheres as polygons of 64
@@ -248,49 +212,22 @@ namespace impm
     unsigned int
     face_points() const
     {
-      return !is_cone && !surface_mesh &&
-                 outline.shape == Body<dim>::Shape::box ?
-               1 :
-               face_quadrature_points;
+      return shape->exact_face_overlap() ? 1 : face_quadrature_points;
     }
 
     /** @brief A one-line description for the start-up report. */
     std::string
     description() const;
 
-    /**
-     * @brief A cone on a cylindrical shaft (3D): the solid swept by
-     * turning its profile about the axis.
-     */
-    struct Cone
+    /** @brief The body's shape, in its own frame. */
+    const RigidShape<dim> &
+    get_shape() const
     {
-      /** The tip. */
-      Point<dim> tip;
-      /** Unit vector from the tip toward the base. */
-      Tensor<1, dim> axis;
-      /** Radius of the base (and the shaft), height from the tip to the
-       *  base and the shaft's length above the base. */
-      double radius = 0., height = 0., shaft_length = 0.;
-      /** The profile in the plane through the axis, as (distance from the
-       *  axis, height above the tip), mirrored about the axis: a closed
-       *  polygon. */
-      std::vector<Point<2>> profile;
-    };
+      return *shape;
+    }
 
     /** Name in messages and columns ("Rigid body 1", ...). */
     std::string name;
-    /** The shape (only its geometry entries are used; not for a
-     *  cone). */
-    Body<dim> outline;
-    /** Whether the body is a cone (then @p cone holds it). */
-    bool is_cone = false;
-    /** The cone (is_cone only). */
-    Cone cone;
-    /** The surface read from 'STL file' (3D; null for the other
-     *  shapes). */
-    std::shared_ptr<const TriangulatedSurface> surface_mesh;
-    /** The STL file's name. */
-    std::string surface_file;
     /** Displacement at load factor 1. */
     Tensor<1, dim> displacement;
     /** The components in which the body is pushed by @p force (its
@@ -320,10 +257,9 @@ namespace impm
     unsigned int face_quadrature_points = 3;
 
   private:
-    /** @brief Read the cone's entries (Tip, Axis, Cone height, Cone
-     *  radius, Shaft length) into @p cone. */
-    void
-    parse_cone(ParameterHandler &prm);
+    /** The shape, made from the parameters by RigidShape::create() (for a
+     *  turning box, its RigidShape::turning_form()). */
+    std::unique_ptr<RigidShape<dim>> shape;
 
     /** @brief Read 'Force-driven components' and 'Force' (after
      *  'Displacement'). */
@@ -331,9 +267,10 @@ namespace impm
     parse_force(ParameterHandler &prm);
 
     /** @brief Read 'Rotation', 'Rotation axis' and 'Rotation centre'
-     *  (after the shape); a turning box becomes a polygon (2D) or a
+     *  (after the shape); a turning shape is probed in its
+     *  RigidShape::turning_form() if it has one (a box: a polygon (2D) or a
      *  surface of 12 triangles (3D), whose faces are probed at Gauss
-     *  points. */
+     *  points). */
     void
     parse_rotation(ParameterHandler &prm);
   };
