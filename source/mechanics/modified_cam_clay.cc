@@ -439,13 +439,12 @@ namespace impm
     if (!(p > 0.))
       {
         std::ostringstream message;
-        message << "Modified Cam-clay: a stress with the mean effective "
-                   "stress p' = "
+        message << "Modified Cam-clay cannot start from a stress with p' = "
                 << p
-                << " Pa <= 0 has no elastic strain (p' = p_ref "
-                   "exp(eps_v/kappa*) > 0 at every strain); start the body "
-                   "from a geostatic stress under gravity, or without an "
-                   "initial stress (then p' = 'Reference pressure').";
+                << " Pa <= 0: its elasticity never reaches it (p' = p_ref "
+                   "exp(eps_v/kappa*) > 0); start the body below its surface "
+                   "level, or without an initial stress (then p' = "
+                   "'Reference pressure').";
         throw InputError(message.str());
       }
     const double volumetric =
