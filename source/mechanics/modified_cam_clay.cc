@@ -63,7 +63,9 @@ namespace impm
                       positive,
                       "p_ref in Pa (> 0): the mean effective (Kirchhoff) "
                       "stress p' at zero elastic strain, so the p' of a point "
-                      "that starts without a geostatic stress.");
+                      "that starts without a geostatic stress (no strain "
+                      "gives zero stress: such a body's free boundaries are "
+                      "not in equilibrium; start it geostatic).");
     prm.declare_entry("Overconsolidation ratio",
                       "1",
                       Patterns::Double(1., Patterns::Double::max_double_value),

@@ -176,11 +176,20 @@ namespace impm
     store_state(const ConstitutiveUpdate &result,
                 const ArrayView<double>  &state) const override;
 
+    /**
+     * @brief The tangent from the return's exact principal tangent
+     * (computed again from the trial eigenvalues and @f$p_{c,n}@f$) through
+     * principal_frame_response().
+     */
     void
     tangent(const ConstitutiveUpdate &result,
             const unsigned int        n_components,
             Tensor<4, 3>             &C) const override;
 
+    /**
+     * @brief The material part of the pulled-back tangent, directly (the
+     * rotation of pull_back_rotation()), at the cost of tangent().
+     */
     void
     pulled_back_tangent(const ConstitutiveUpdate &result,
                         const unsigned int        n_components,
@@ -204,6 +213,7 @@ namespace impm
     elastic_strain_for_stress(
       const SymmetricTensor<2, 3> &kirchhoff_stress) const override;
 
+    /** @brief "Modified Cam-clay: M = ..., lambda = ..., ..., OCR = ...". */
     std::string
     description() const override;
 
