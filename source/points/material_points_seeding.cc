@@ -32,8 +32,24 @@ namespace impm
     if (body.initial_stress.geostatic)
       {
         const SymmetricTensor<2, 3> stress = body.geostatic_stress(position, g);
-        const SymmetricTensor<2, 3> elastic_strain =
-          body.material->elastic_strain_for_stress(stress);
+        SymmetricTensor<2, 3>       elastic_strain;
+        try
+          {
+            elastic_strain = body.material->elastic_strain_for_stress(stress);
+          }
+        catch (const InputError &error)
+          {
+            // A stress the elastic law cannot reach, found on this process
+            // only: reported with the others, on every process.
+            if (outside_yield_surface.empty())
+              {
+                std::ostringstream message;
+                message << body.name << " at (" << position
+                        << "): " << error.what();
+                outside_yield_surface = message.str();
+              }
+            elastic_strain = unit_symmetric_tensor<3>();
+          }
         state.set_kirchhoff_stress(stress);
         state.set_elastic_left_cauchy_green(elastic_strain);
         body.material->initialize_state(stress, own_state);

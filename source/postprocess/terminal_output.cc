@@ -222,11 +222,10 @@ namespace impm
                                    const RunStatistics<dim> &statistics,
                                    const double column_deviation) const
     {
-      const auto  &parameters = context.parameters;
-      const auto  &state      = statistics.final_state;
-      const double length     = context.testing.reference_length;
-      const double stress     = context.testing.reference_stress;
-      const double force      = scales(context).force;
+      const auto  &state  = statistics.final_state;
+      const double length = context.testing.reference_length;
+      const double stress = context.testing.reference_stress;
+      const double force  = scales(context).force;
       for (const auto &line : log_lines)
         std::cout << line << '\n';
       // No pair of residuals near the solution (a step converged in one or

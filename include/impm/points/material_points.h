@@ -273,7 +273,9 @@ namespace impm
      * @p properties: zero, or the body's geostatic stress under gravity @p
      * g with the elastic strain its material gives it, and its material's
      * state at that stress; the first geostatic stress outside the yield
-     * surface is described in @p outside_yield_surface.
+     * surface, or that the material's elastic law cannot reach (Modified
+     * Cam-clay at p' <= 0), is described in @p outside_yield_surface, which
+     * the seeding reports on every process.
      */
     void
     set_initial_stress(const Body<dim>     &body,
