@@ -54,6 +54,14 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // Open MPI's shared-file-pointer component 'sm' guards an MPI-IO file with
+  // a named semaphore in /dev/shm named after the file's base name
+  // (sem.OMPIO_grid for the checkpoint's grid): a run killed while it holds
+  // it (SIGKILL during a checkpoint) leaves it taken, and every later run on
+  // the machine then waits forever in its first checkpoint. IMPM uses no
+  // shared file pointer; without 'sm' Open MPI takes a component whose locks
+  // die with the process. A user's own choice (the variable set) is kept.
+  setenv("OMPI_MCA_sharedfp", "^sm", 0);
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // Errors are reported by their message; a user needs no stack trace.
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
