@@ -223,9 +223,14 @@ expect stop_after_zero_steps "--stop-after-step '0': expected a number of load s
 expect two_scene_files "Only one scene file may be given" - -- "$base" "$base"
 
 # Inertia.
-expect inertia_unstable_newmark "Inertia: Newmark gamma = 0.4 with beta = 0.25 is not unconditionally stable: it needs 0.5 <= gamma <= 4 beta" - -- "$base" --set "Inertia/Enabled=true" --set "Inertia/Newmark gamma=0.4"
-expect inertia_bad_velocity "Parameter 'Inertia/Initial velocity' = 'sin\\(x' is not allowed: it must be 0 or 2 expressions in x, y separated by ';'" - -- "$base" --set "Inertia/Enabled=true" --set "Inertia/Initial velocity=sin(x"
-expect inertia_zero_end_time "Parameter 'Inertia/End time' = '0' is not allowed: it must be > 0" - -- "$base" --set "Inertia/Enabled=true" --set "Inertia/End time=0"
+expect inertia_unstable_newmark "Inertia: Newmark gamma = 0.4 with beta = 0.25 is not unconditionally stable: it needs 0.5 <= gamma <= 4 beta" - -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Newmark gamma=0.4"
+expect inertia_bad_velocity "Parameter 'Inertia/Initial velocity' = 'sin\\(x' is not allowed: it must be 0 or 2 expressions in x, y separated by ';'" - -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Initial velocity=sin(x"
+expect inertia_without_time "Inertia needs time: set 'Time/End time' above 0 \\(the load steps are then time steps\\)." - -- "$base" --set "Inertia/Enabled=true"
+expect time_step_without_end_time "Parameter 'Time/Time step' = 0.100000 needs 'Time/End time' above 0" - -- "$base" --set "Time/Time step=0.1"
+expect time_step_above_end_time "Parameter 'Time/Time step' = 2.000000 is not allowed: it must be at most 'Time/End time' = 1.000000." - -- "$base" --set "Time/End time=1" --set "Time/Time step=2"
+expect load_factor_without_time "Parameter 'Time/Load factor' = 't' needs 'Time/End time' above 0" - -- "$base" --set "Time/Load factor=t"
+expect load_factor_bad_expression "Parameter 'Time/Load factor' = 'sin\\(t' is not allowed: it must be an expression in t" - -- "$base" --set "Time/End time=1" --set "Time/Load factor=sin(t"
+expect load_factor_infinite "Parameter 'Time/Load factor' = '1/t' is not allowed: it must be an expression in t" - -- "$base" --set "Time/End time=1" --set "Time/Load factor=1/t"
 
 # Declared point state: a field no point stores; a checkpoint resumed into
 # points laid out otherwise (the plastic model's state, then an elastic

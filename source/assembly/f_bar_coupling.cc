@@ -50,8 +50,7 @@ namespace impm
   void
   FBar<dim>::begin_attempt(const MaterialPoints<dim> &,
                            const LoadStepSystem<dim> &,
-                           const double,
-                           const double)
+                           const StepSpan &)
   {
     if (has_pressure_unknowns())
       reset_pressure_unknowns();
@@ -179,8 +178,7 @@ namespace impm
     std::vector<std::vector<types::global_dof_index>> &);        \
   template void FBar<dim>::begin_attempt(const MaterialPoints<dim> &,    \
                                          const LoadStepSystem<dim> &,    \
-                                         const double,                   \
-                                         const double);                  \
+                                         const StepSpan &);              \
   template bool FBar<dim>::sets_point_volumes() const;                   \
   template bool FBar<dim>::update_stresses(                              \
     PointSteps<dim> &, const std::function<bool(unsigned int)> &);       \

@@ -30,10 +30,9 @@ namespace impm
   void
   RigidContact<dim>::begin_attempt(const MaterialPoints<dim> &material_points,
                                    const LoadStepSystem<dim> &system,
-                                   const double               start,
-                                   const double               target)
+                                   const StepSpan            &span)
   {
-    begin(material_points, system, start, target);
+    begin(material_points, system, span.start, span.target);
   }
 
 
@@ -76,8 +75,7 @@ namespace impm
   template PointFields RigidContact<dim>::point_fields() const;               \
   template void RigidContact<dim>::begin_attempt(const MaterialPoints<dim> &, \
                                                  const LoadStepSystem<dim> &, \
-                                                 const double,                \
-                                                 const double);               \
+                                                 const StepSpan &);           \
   template bool RigidContact<dim>::add_matrix(                                \
     const PointGradients<dim> &,                                              \
     const LoadStepSystem<dim> &,                                              \

@@ -88,8 +88,23 @@ namespace impm
   void
   Coupling<dim>::begin_attempt(const MaterialPoints<dim> &,
                                const LoadStepSystem<dim> &,
-                               const double,
-                               const double)
+                               const StepSpan &)
+  {}
+
+
+
+  template <int dim>
+  bool
+  Coupling<dim>::needs_start_residual() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  Coupling<dim>::set_start_residual(const NodalVector &)
   {}
 
 

@@ -2,6 +2,7 @@
 // converged form, with the lumped mass of the start-of-step grid.
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <impm/base/errors.h>
 #include <impm/base/names.h>
@@ -19,31 +20,48 @@ namespace impm
   {
     /**
      * @brief The inertia of the material points: a scene that names it is
-     * solved in time, each load step a time step of the Newmark family on
-     * the grid of the step's start (the previously converged statement of
-     * equilibrium with the inertial force @f$M a^{n+1}@f$ added to the
-     * internal force).
-     *
-     * The load factor is the time over `End time`: the loads, prescribed
-     * displacements and rigid-body motions ramp with it as in a
-     * quasi-static scene (gravity not ramped acts at once), the step
-     * control's cuts and growth are cuts and growth of the time step, and
-     * a step of load increment @f$\Delta\lambda@f$ lasts @f$\Delta t =
-     * \Delta\lambda\,T@f$.
+     * solved in time (subsection `Time`), each step a time step on the
+     * grid of the step's start (the previously converged statement of
+     * equilibrium with the inertial force added to the internal force).
      *
      * At the start of a step the points' mass, momentum and mass times
      * acceleration are mapped to the nodes with the step's weights
      * @f$N_{Ip}@f$ (a lumped mass: @f$M_I = \sum_p N_{Ip} m_p@f$,
-     * @f$M_I v_I = \sum_p N_{Ip} m_p v_p@f$, @f$M_I a_I = \sum_p N_{Ip}
-     * m_p a_p@f$), zero on the DoFs outside the system (constrained). The
-     * Newmark relations with parameters @f$\beta, \gamma@f$ give the
-     * nodal acceleration and velocity at the step's end from the
-     * displacement increment @f$\Delta u@f$:
-     * @f$a^{n+1} = (\Delta u - \Delta t\, v^n)/(\beta \Delta t^2) -
-     * (1/(2\beta) - 1)\, a^n@f$, @f$v^{n+1} = v^n + \Delta t\,((1 -
-     * \gamma)\, a^n + \gamma\, a^{n+1})@f$, so the inertial force adds
-     * @f$M/(\beta\Delta t^2)@f$ to the matrix's diagonal, constant over the
-     * step. A converged step updates each point (FLIP): @f$v_p \mathrel{+}=
+     * @f$p_I = M_I v_I = \sum_p N_{Ip} m_p v_p@f$, @f$q_I = M_I a_I =
+     * \sum_p N_{Ip} m_p a_p@f$), zero on the DoFs outside the system
+     * (constrained). The Newmark relations with @f$\beta, \gamma@f$ give
+     * the nodal acceleration and velocity at the step's end from the
+     * displacement increment @f$\Delta u@f$: @f$a^{n+1} = c_1 \Delta u -
+     * c_2 v^n - c_3 a^n@f$ with @f$c_1 = 1/(\beta\Delta t^2)@f$, @f$c_2 =
+     * 1/(\beta\Delta t)@f$, @f$c_3 = 1/(2\beta) - 1@f$, and @f$v^{n+1} =
+     * v^n + \Delta t\,((1 - \gamma)\, a^n + \gamma\, a^{n+1})@f$.
+     *
+     * Generalised-alpha (Chung and Hulbert 1993) holds the balance at
+     * @f$t_{n+1-\alpha_f}@f$ with the inertia at @f$n+1-\alpha_m@f$:
+     * @f$(1-\alpha_m) M a^{n+1} + \alpha_m M a^n + (1-\alpha_f)\, r(\Delta
+     * u) + \alpha_f\, r^n = 0@f$, where @f$r = f_{int} - f_{ext}@f$ and
+     * @f$r^n@f$ is the residual of the step's start on this step's grid
+     * (Coupling::set_start_residual()). Divided by @f$1-\alpha_f@f$, the
+     * coupling adds @f$k_m M a^{n+1} + k_a q + k_r r^n@f$ to the internal
+     * force, @f$k_m = (1-\alpha_m)/(1-\alpha_f)@f$, @f$k_a =
+     * \alpha_m/(1-\alpha_f)@f$, @f$k_r = \alpha_f/(1-\alpha_f)@f$. From the
+     * spectral radius at infinite frequency @f$\rho_\infty@f$:
+     * @f$\alpha_m = (2\rho_\infty - 1)/(\rho_\infty + 1)@f$, @f$\alpha_f =
+     * \rho_\infty/(\rho_\infty + 1)@f$, @f$\gamma = 1/2 - \alpha_m +
+     * \alpha_f@f$, @f$\beta = (1 - \alpha_m + \alpha_f)^2/4@f$. Newmark is
+     * the case @f$\alpha_m = \alpha_f = 0@f$. The other couplings' forces
+     * (contact, springs) are taken at the step's end, not weighed.
+     *
+     * Mass-proportional (Rayleigh) damping @f$C = \alpha_R M@f$ adds
+     * @f$\alpha_R (M v^{n+1} + k_r p)@f$, weighed like the internal force.
+     * The matrix gains @f$(k_m c_1 + \alpha_R\gamma\Delta t\, c_1) M@f$ on
+     * its diagonal, constant over the step.
+     *
+     * The first step's nodal acceleration is that of the balance at the
+     * start, @f$M a^0 = f_{ext}(0) - f_{int}(0)@f$ (a body under gravity
+     * applied at once starts falling at g), not the points' zero.
+     *
+     * A converged step updates each point (FLIP): @f$v_p \mathrel{+}=
      * \sum_I N_{Ip} (v_I^{n+1} - v_I^n)@f$, @f$a_p = \sum_I N_{Ip}
      * a_I^{n+1}@f$. The trapezoidal rule (@f$\beta = 1/4, \gamma =
      * 1/2@f$, the default) conserves the energy of the nodal system; the
@@ -51,9 +69,8 @@ namespace impm
      * of the points' kinetic energy the nodes cannot represent.
      *
      * The points' `velocity` and `acceleration` are declared point fields
-     * (written, kept in checkpoints); the kinetic energy and the time are
-     * step measures. A scene that does not name inertia creates none of
-     * this.
+     * (written, kept in checkpoints); the kinetic, elastic (strain) and
+     * total energy are step measures. A scene that does not name inertia creates none of this.
      *
      * @tparam dim Space dimension.
      */
@@ -69,15 +86,17 @@ namespace impm
                           "false",
                           Patterns::Bool(),
                           "Whether the points have inertia: the scene is "
-                          "solved in time (see 'End time'). Off: the "
-                          "quasi-static statement, with no mass matrix and "
-                          "no velocities stored.");
-        prm.declare_entry("End time",
-                          "1",
-                          Patterns::Double(0.),
-                          "The time at full load, in s (> 0): the load "
-                          "factor is the time over it, so a load step of "
-                          "Solver/Load steps lasts End time / Load steps.");
+                          "solved in time (it needs 'Time/End time'). Off: "
+                          "the quasi-static statement, with no mass matrix "
+                          "and no velocities stored.");
+        prm.declare_entry("Integrator",
+                          "Newmark",
+                          Patterns::Selection("Newmark|generalised-alpha"),
+                          "The time integrator: 'Newmark' (with 'Newmark "
+                          "beta' and 'Newmark gamma'; the trapezoidal rule "
+                          "by default) or 'generalised-alpha' (Chung and "
+                          "Hulbert, with 'Spectral radius'), both implicit "
+                          "in full Newton.");
         prm.declare_entry("Newmark beta",
                           "0.25",
                           Patterns::Double(0., 0.5),
@@ -91,6 +110,20 @@ namespace impm
                           "gamma of the Newmark rule (0.5: no numerical "
                           "damping; above 0.5 damps); from 0.5 to 1, and "
                           "at most 4 beta for unconditional stability.");
+        prm.declare_entry("Spectral radius",
+                          "0.8",
+                          Patterns::Double(0., 1.),
+                          "generalised-alpha's spectral radius at infinite "
+                          "frequency, from 0 (the most damping of the "
+                          "highest frequencies) to 1 (none: the "
+                          "trapezoidal rule's energy conservation).");
+        prm.declare_entry("Mass damping",
+                          "0",
+                          Patterns::Double(0.),
+                          "The mass-proportional Rayleigh damping "
+                          "coefficient alpha in 1/s (damping force alpha M "
+                          "v; a mode of angular frequency omega is damped "
+                          "at the ratio alpha / (2 omega)). 0: none.");
         prm.declare_entry("Initial velocity",
                           "0",
                           Patterns::Anything(),
@@ -101,18 +134,28 @@ namespace impm
                           "e.g. '0.1*sin(pi*x/50); 0'.");
       }
 
-      /** @brief The inertia of a scene (from its subsection). */
+      /** @brief The inertia of a scene (from its subsection; it needs the
+       *  scene's time). */
       explicit Inertia(const CouplingInputs<dim> &inputs)
-        : end_time(inputs.prm.get_double("End time"))
-        , beta(inputs.prm.get_double("Newmark beta"))
-        , gamma(inputs.prm.get_double("Newmark gamma"))
+        : generalised_alpha(inputs.prm.get("Integrator") == "generalised-alpha")
+        , spectral_radius(inputs.prm.get_double("Spectral radius"))
+        , alpha_m(generalised_alpha ?
+                    (2. * spectral_radius - 1.) / (spectral_radius + 1.) :
+                    0.)
+        , alpha_f(generalised_alpha ? spectral_radius / (spectral_radius + 1.) :
+                                      0.)
+        , beta(generalised_alpha ?
+                 0.25 * (1. - alpha_m + alpha_f) * (1. - alpha_m + alpha_f) :
+                 inputs.prm.get_double("Newmark beta"))
+        , gamma(generalised_alpha ? 0.5 - alpha_m + alpha_f :
+                                    inputs.prm.get_double("Newmark gamma"))
+        , mass_damping(inputs.prm.get_double("Mass damping"))
         , initial_velocity_expression(inputs.prm.get("Initial velocity"))
         , grid(inputs.grid)
       {
-        if (!(end_time > 0.))
-          throw InputError("Parameter 'Inertia/End time' = '" +
-                           inputs.prm.get("End time") +
-                           "' is not allowed: it must be > 0.");
+        if (!inputs.time.in_time())
+          throw InputError("Inertia needs time: set 'Time/End time' above 0 "
+                           "(the load steps are then time steps).");
         if (!(beta > 0.))
           throw InputError("Parameter 'Inertia/Newmark beta' = '" +
                            inputs.prm.get("Newmark beta") +
@@ -156,9 +199,17 @@ namespace impm
       descriptions() const override
       {
         std::ostringstream out;
-        out << "inertia: Newmark (beta " << beta << ", gamma " << gamma
-            << (beta == 0.25 && gamma == 0.5 ? ", the trapezoidal rule" : "")
-            << "), lumped mass, end time " << end_time << " s";
+        if (generalised_alpha)
+          out << "inertia: generalised-alpha (spectral radius "
+              << spectral_radius << ": alpha_m " << alpha_m << ", alpha_f "
+              << alpha_f << ")";
+        else
+          out << "inertia: Newmark (beta " << beta << ", gamma " << gamma
+              << (beta == 0.25 && gamma == 0.5 ? ", the trapezoidal rule" : "")
+              << ")";
+        out << ", lumped mass";
+        if (mass_damping > 0.)
+          out << ", mass damping " << mass_damping << " 1/s";
         if (initial_velocity)
           out << ", initial velocity " << initial_velocity_expression;
         return {out.str()};
@@ -177,16 +228,21 @@ namespace impm
           });
       }
 
+      /** @brief A resumed run's points carry their accelerations. */
+      void
+      load(const RunState &) override
+      {
+        started = true;
+      }
+
       /** @brief The nodal mass, momentum and mass times acceleration of
        *  the step's start. */
       void
       begin_attempt(const MaterialPoints<dim> &material_points,
                     const LoadStepSystem<dim> &system,
-                    const double               start,
-                    const double               target) override
+                    const StepSpan            &span) override
       {
-        time_step        = (target - start) * end_time;
-        end_of_step_time = target * end_time;
+        time_step = span.time_step();
         grid.reinit_vector(mass);
         grid.reinit_vector(momentum);
         grid.reinit_vector(mass_acceleration);
@@ -222,27 +278,57 @@ namespace impm
           }
         // The constrained DoFs do not move with the material: no velocity
         // or acceleration there (their motion is prescribed).
-        for (unsigned int i = 0;
-             i < mass.locally_owned_size() +
-                   mass.get_partitioner()->n_ghost_indices();
-             ++i)
-          if (system.system_index(i) == numbers::invalid_dof_index)
-            {
-              momentum.local_element(i)          = 0.;
-              mass_acceleration.local_element(i) = 0.;
-            }
+        in_system.assign(n_local(), false);
+        for (unsigned int i = 0; i < n_local(); ++i)
+          {
+            in_system[i] = system.system_index(i) != numbers::invalid_dof_index;
+            if (!in_system[i])
+              {
+                momentum.local_element(i)          = 0.;
+                mass_acceleration.local_element(i) = 0.;
+              }
+          }
+        start_residual.clear();
       }
 
-      /** @brief The mass term of the matrix, @f$M/(\beta\Delta t^2)@f$ on
-       *  the diagonal of the owned rows (added with every matrix: the
-       *  constant part of the matrix is kept over the attempts of a step,
-       *  whose time steps differ). */
+      /** @brief Generalised-alpha weighs the start's residual; the first
+       *  step takes its acceleration from it. */
+      bool
+      needs_start_residual() const override
+      {
+        return alpha_f > 0. || !started;
+      }
+
+      /** @brief Keep the start's residual (generalised-alpha), and on the
+       *  first step set the nodes' mass times acceleration to the start's
+       *  balance, @f$M a^0 = -r^0@f$. */
+      void
+      set_start_residual(const NodalVector &internal_minus_external) override
+      {
+        if (alpha_f > 0.)
+          {
+            start_residual.resize(n_local());
+            for (unsigned int i = 0; i < n_local(); ++i)
+              start_residual[i] =
+                in_system[i] ? internal_minus_external.local_element(i) : 0.;
+          }
+        if (!started)
+          for (unsigned int i = 0; i < n_local(); ++i)
+            if (in_system[i] && mass.local_element(i) > 0.)
+              mass_acceleration.local_element(i) =
+                -internal_minus_external.local_element(i);
+      }
+
+      /** @brief The mass term of the matrix on the diagonal of the owned
+       *  rows (added with every matrix: the constant part of the matrix is
+       *  kept over the attempts of a step, whose time steps differ). */
       bool
       add_matrix(const PointGradients<dim> &,
                  const LoadStepSystem<dim>      &system,
                  TrilinosWrappers::SparseMatrix &matrix) override
       {
-        const double c = 1. / (beta * time_step * time_step);
+        const double c1 = 1. / (beta * time_step * time_step);
+        const double c  = (k_m() + mass_damping * gamma * time_step) * c1;
         for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
           {
             const auto row = system.system_index(i);
@@ -252,25 +338,38 @@ namespace impm
         return true;
       }
 
-      /** @brief The inertial force @f$M a^{n+1}(\Delta u)@f$ at the owned
-       *  DoFs of the system. Collective (its size). */
+      /** @brief The inertial (and damping) force at the owned DoFs of the
+       *  system. Collective (its size). */
       void
-      add_forces(const LoadStepSystem<dim> &system,
-                 const NodalVector         &increment,
-                 NodalVector               &internal_force) override
+      add_forces(const LoadStepSystem<dim> &,
+                 const NodalVector &increment,
+                 NodalVector       &internal_force) override
       {
         const double c1           = 1. / (beta * time_step * time_step);
         const double c2           = 1. / (beta * time_step);
         const double c3           = 1. / (2. * beta) - 1.;
+        const double k_a          = alpha_m / (1. - alpha_f);
+        const double k_r          = alpha_f / (1. - alpha_f);
         double       norm_squared = 0.;
         force_on_material         = Tensor<1, dim>();
         for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
-          if (system.system_index(i) != numbers::invalid_dof_index)
+          if (in_system[i])
             {
-              const double force =
+              const double p = momentum.local_element(i);
+              const double q = mass_acceleration.local_element(i);
+              // M a^{n+1}
+              const double mass_times_acceleration =
                 c1 * mass.local_element(i) * increment.local_element(i) -
-                c2 * momentum.local_element(i) -
-                c3 * mass_acceleration.local_element(i);
+                c2 * p - c3 * q;
+              double force = k_m() * mass_times_acceleration + k_a * q;
+              if (!start_residual.empty())
+                force += k_r * start_residual[i];
+              if (mass_damping > 0.)
+                force += mass_damping *
+                         (p +
+                          time_step * ((1. - gamma) * q +
+                                       gamma * mass_times_acceleration) +
+                          k_r * p);
               internal_force.local_element(i) += force;
               norm_squared += force * force;
               force_on_material[component_of[i]] += force;
@@ -305,10 +404,9 @@ namespace impm
         const double c3 = 1. / (2. * beta) - 1.;
         // The nodes' new acceleration and change of velocity (owned and
         // ghost DoFs: the points read both).
-        const unsigned int n_local =
-          mass.locally_owned_size() + mass.get_partitioner()->n_ghost_indices();
-        std::vector<double> new_acceleration(n_local), velocity_change(n_local);
-        for (unsigned int i = 0; i < n_local; ++i)
+        std::vector<double> new_acceleration(n_local()),
+          velocity_change(n_local());
+        for (unsigned int i = 0; i < n_local(); ++i)
           {
             const double m = mass.local_element(i);
             const double v = m > 0. ? momentum.local_element(i) / m : 0.;
@@ -325,12 +423,13 @@ namespace impm
         const auto         &steps          = system.point_steps;
         std::vector<double> velocities(steps.size() * dim),
           accelerations(steps.size() * dim);
-        double energy = 0.;
+        double energy = 0., elastic_energy = 0.;
         for (const auto &point : material_points.particles())
           {
             const auto            properties = point.get_properties();
             const unsigned int    p          = steps.index_of(point);
             const PointStep<dim> &step       = steps[p];
+            elastic_energy += stored_energy(step);
             for (unsigned int i = 0; i < dim; ++i)
               {
                 double dv = 0., a = 0.;
@@ -353,15 +452,17 @@ namespace impm
         const MPI_Comm communicator =
           grid.get_triangulation().get_communicator();
         kinetic_energy = Utilities::MPI::sum(energy, communicator);
+        strain_energy  = Utilities::MPI::sum(elastic_energy, communicator);
         for (unsigned int d = 0; d < dim; ++d)
           accepted_force[d] =
             Utilities::MPI::sum(force_on_material[d], communicator);
+        started = true;
       }
 
       std::vector<std::string>
       step_measure_columns() const override
       {
-        return {"time", "kinetic_energy"};
+        return {"kinetic_energy", "strain_energy", "total_energy"};
       }
 
       void
@@ -369,23 +470,74 @@ namespace impm
                     std::vector<StepMeasure> &measures) const override
       {
         measures.push_back(
-          {"time", "t", end_of_step_time, MeasureKind::number});
-        measures.push_back(
           {"kinetic_energy", "Ek", kinetic_energy, MeasureKind::energy});
+        measures.push_back(
+          {"strain_energy", "Es", strain_energy, MeasureKind::energy});
+        measures.push_back({"total_energy",
+                            "E",
+                            kinetic_energy + strain_energy,
+                            MeasureKind::energy});
       }
 
     private:
-      const double                         end_time;
+      /** A point's elastic energy at the step's end (its converged
+       *  update), @f$V_0\,\tfrac12\,\tau : \varepsilon_e@f$
+       *  with the elastic logarithmic strain @f$\varepsilon_e = \tfrac12
+       *  \ln b_e@f$: exact for the elastic laws linear in the logarithmic
+       *  strain (Hencky, and the plastic models built on it), an estimate
+       *  for pressure-dependent elasticity (Cam-clay). */
+      static double
+      stored_energy(const PointStep<dim> &step)
+      {
+        const auto eigen = eigenvectors(step.update.elastic_left_cauchy_green);
+        SymmetricTensor<2, 3> log_strain;
+        for (unsigned int k = 0; k < 3; ++k)
+          log_strain += 0.5 * std::log(eigen[k].first) *
+                        symmetrize(outer_product(eigen[k].second,
+                                                 eigen[k].second));
+        return step.initial_volume * 0.5 *
+               (step.update.kirchhoff_stress * log_strain);
+      }
+
+      /** The weight of the end-of-step inertial force, (1 - alpha_m) / (1 -
+       *  alpha_f). */
+      double
+      k_m() const
+      {
+        return (1. - alpha_m) / (1. - alpha_f);
+      }
+
+      /** The number of local DoFs (owned and ghosts). */
+      unsigned int
+      n_local() const
+      {
+        return mass.locally_owned_size() +
+               mass.get_partitioner()->n_ghost_indices();
+      }
+
+      const bool                           generalised_alpha;
+      const double                         spectral_radius;
+      const double                         alpha_m;
+      const double                         alpha_f;
       const double                         beta;
       const double                         gamma;
+      const double                         mass_damping;
       const std::string                    initial_velocity_expression;
       std::unique_ptr<FunctionParser<dim>> initial_velocity;
       const BackgroundGrid<dim>           &grid;
-      double                               time_step        = 0.;
-      double                               end_of_step_time = 0.;
-      NodalVector                          mass, momentum, mass_acceleration;
-      double                               inertial_force_norm = 0.;
-      double                               kinetic_energy      = 0.;
+      /** Whether a step was accepted (or the run resumed): the points
+       *  carry accelerations. */
+      bool        started   = false;
+      double      time_step = 0.;
+      NodalVector mass, momentum, mass_acceleration;
+      /** Whether each local DoF is in the system (not constrained). */
+      std::vector<bool> in_system;
+      /** The residual of the step's start on the local DoFs (empty
+       *  unless generalised-alpha). */
+      std::vector<double> start_residual;
+      double              inertial_force_norm = 0.;
+      double              kinetic_energy      = 0.;
+      double              strain_energy       = 0.;
       /** Each local DoF's component (from the points' supports). */
       std::vector<unsigned char> component_of;
       /** The inertial force of the last add_forces() (this process's

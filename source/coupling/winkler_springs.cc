@@ -115,8 +115,7 @@ namespace impm
       void
       begin_attempt(const MaterialPoints<dim> &material_points,
                     const LoadStepSystem<dim> &system,
-                    const double,
-                    const double) override
+                    const StepSpan &) override
       {
         if (!selected)
           {

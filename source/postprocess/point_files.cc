@@ -101,7 +101,7 @@ namespace impm
       {
         const unsigned int interval = context.output.interval;
         if (record.converged() &&
-            (record.step_number % interval == 0 || record.target == 1.))
+            (record.step_number % interval == 0 || record.last))
           write(context, record.target, record.step_number);
       }
 

@@ -73,7 +73,7 @@ namespace impm
                       "/point_history.csv");
             write_header(context);
           }
-        write_rows(context, 0, 0.);
+        write_rows(context, 0, 0., context.time.in_time() ? 0. : -1.);
       }
 
       void
@@ -100,7 +100,10 @@ namespace impm
                  const RunStatistics<dim> &) override
       {
         if (record.converged())
-          write_rows(context, record.step_number, record.target);
+          write_rows(context,
+                     record.step_number,
+                     record.target,
+                     record.end_time);
       }
 
     private:
@@ -143,7 +146,10 @@ namespace impm
       write_header(const RunContext<dim> &context)
       {
         std::ostream &out = file.stream();
-        out << "step,load_factor,point,id";
+        out << "step,load_factor,";
+        if (context.time.in_time())
+          out << "time,";
+        out << "point,id";
         for (unsigned int d = 0; d < dim; ++d)
           out << ',' << Names::axis(d);
         for (unsigned int d = 0; d < dim; ++d)
@@ -194,7 +200,8 @@ namespace impm
       void
       write_rows(const RunContext<dim> &context,
                  const unsigned int     step,
-                 const double           load_factor)
+                 const double           load_factor,
+                 const double           end_time)
       {
         std::vector<
           std::tuple<unsigned int, types::particle_index, std::vector<double>>>
@@ -217,7 +224,10 @@ namespace impm
         out << std::setprecision(10);
         for (const auto &[k, id, values] : rows)
           {
-            out << step << ',' << load_factor << ',' << k + 1 << ',' << id;
+            out << step << ',' << load_factor << ',';
+            if (end_time >= 0.)
+              out << end_time << ',';
+            out << k + 1 << ',' << id;
             for (const double value : values)
               out << ',' << value;
             out << '\n';

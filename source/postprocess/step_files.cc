@@ -121,8 +121,10 @@ namespace impm
       void
       write_header(const RunContext<dim> &context, std::ostream &out) override
       {
-        out << "step,load_factor,load_increment,converged,"
-               "newton_iterations,relative_residual,system_dofs";
+        out << "step,load_factor,load_increment,";
+        if (context.time.in_time())
+          out << "time,";
+        out << "converged,newton_iterations,relative_residual,system_dofs";
         for (const std::string &column : context.step_measure_columns)
           out << ',' << column;
         for (const unsigned int c : context.grid.reaction_columns())
@@ -143,8 +145,10 @@ namespace impm
         const auto times =
           context.timer.get_summary_data(TimerOutput::total_wall_time);
         out << record.step_number << ',' << std::setprecision(10)
-            << record.target << ',' << record.target - record.start << ','
-            << (record.converged() ? 1 : 0) << ','
+            << record.target << ',' << record.target - record.start << ',';
+        if (context.time.in_time())
+          out << record.end_time << ',';
+        out << (record.converged() ? 1 : 0) << ','
             << record.newton.n_iterations() << ','
             << record.newton.final_residual() << ',' << record.system_dofs;
         for (unsigned int m = 0; m < context.step_measure_columns.size(); ++m)

@@ -95,7 +95,8 @@ namespace impm
     , root_out(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , grid(parameters.grid, communicator, checkpoint_grid)
-    , couplings(CouplingInputs<dim>{parameters, prm, grid})
+    , load_path(settings.time)
+    , couplings(CouplingInputs<dim>{parameters, prm, grid, settings.time})
     , material_points(parameters.bodies,
                       grid,
                       communicator,
@@ -279,6 +280,7 @@ namespace impm
                       settings.solver,
                       settings.output,
                       settings.testing,
+                      settings.time,
                       grid,
                       material_points,
                       effect_descriptions,
@@ -387,11 +389,14 @@ namespace impm
   MPMSolver<dim>::attempt_load_step(const LoadStepControl &control)
   {
     StepRecord record;
-    record.step_number = control.step_number();
-    record.start       = control.start();
-    record.target      = control.target();
-    record.system_dofs = system.n_dofs();
-    problem.begin(material_points, record.start, record.target);
+    record.step_number  = control.step_number();
+    const StepSpan span = load_path.span(control.start(), control.target());
+    record.start        = span.start;
+    record.target       = span.target;
+    record.end_time     = load_path.in_time() ? span.end_time : -1.;
+    record.last         = control.target() >= 1.;
+    record.system_dofs  = system.n_dofs();
+    problem.begin(material_points, span);
     record.newton                       = newton_solver.solve(problem);
     const TangentCheckResult check      = problem.take_tangent_check();
     record.tangent_difference           = check.largest_row_difference;

@@ -13,6 +13,7 @@ namespace impm
     Parameters::Output::declare_parameters(prm);
     Parameters::Testing::declare_parameters(prm);
     Parameters::Checkpoint::declare_parameters(prm);
+    Parameters::Time::declare_parameters(prm);
     Couplings<2>::declare_parameters(prm);
     PostprocessorManager<2>::declare_parameters(prm);
   }

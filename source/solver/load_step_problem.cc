@@ -38,16 +38,47 @@ namespace impm
   template <int dim>
   void
   LoadStepProblem<dim>::begin(const MaterialPoints<dim> &material_points,
-                              const double               start,
-                              const double               target)
+                              const StepSpan            &span)
   {
     for (const auto &coupling : couplings.list())
-      coupling->begin_attempt(material_points, system, start, target);
+      coupling->begin_attempt(material_points, system, span);
     displacement_increment = 0.;
-    grid.apply_prescribed_increment(target - start, displacement_increment);
+    set_start_residual(span.start);
+    grid.apply_prescribed_increment(span.target - span.start,
+                                    displacement_increment);
     TimerOutput::Scope scope(timer, "assembly");
-    assembler.assemble_external_force(target, external_force);
+    assembler.assemble_external_force(span.target, external_force);
     external_force_norm = system.norm_in_system(external_force);
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepProblem<dim>::set_start_residual(const double start_load_factor)
+  {
+    const auto &list = couplings.list();
+    if (std::none_of(list.begin(), list.end(), [](const auto &coupling) {
+          return coupling->needs_start_residual();
+        }))
+      return;
+    // The stresses of the zero increment are those of the step's start.
+    {
+      TimerOutput::Scope scope(timer, "stress update");
+      AssertThrow(assembler.update_stresses(displacement_increment),
+                  ExcMessage("The step's start is not admissible."));
+    }
+    TimerOutput::Scope scope(timer, "assembly");
+    internal_force = 0.;
+    assembler.add_internal_force(internal_force);
+    internal_force.compress(VectorOperation::add);
+    assembler.assemble_external_force(start_load_factor, external_force);
+    internal_force -= external_force;
+    internal_force.update_ghost_values();
+    for (const auto &coupling : list)
+      if (coupling->needs_start_residual())
+        coupling->set_start_residual(internal_force);
+    internal_force.zero_out_ghost_values();
   }
 
 

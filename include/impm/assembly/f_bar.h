@@ -107,8 +107,7 @@ namespace impm
     void
     begin_attempt(const MaterialPoints<dim> &material_points,
                   const LoadStepSystem<dim> &system,
-                  const double               start,
-                  const double               target) override;
+                  const StepSpan            &span) override;
 
     /** @brief True: F-bar sets the points' volume changes. */
     bool

@@ -77,8 +77,7 @@ namespace impm
     void
     begin_attempt(const MaterialPoints<dim> &material_points,
                   const LoadStepSystem<dim> &system,
-                  const double               start,
-                  const double               target) override;
+                  const StepSpan            &span) override;
 
     /** @brief add_contact_matrix(); through the matrix's add(). */
     bool

@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <impm/base/plugin_list.h>
+#include <impm/core/load_path.h>
 #include <impm/core/parameters.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
@@ -225,14 +226,32 @@ namespace impm
     /** @{ */
 
     /**
-     * @brief Start an attempt from load factor @p start to @p target, before
-     * the first residual. Collective.
+     * @brief Start an attempt at the step @p span (its load factors and
+     * times), before the first residual. Collective.
      */
     virtual void
     begin_attempt(const MaterialPoints<dim> &material_points,
                   const LoadStepSystem<dim> &system,
-                  const double               start,
-                  const double               target);
+                  const StepSpan            &span);
+
+    /**
+     * @brief Whether this attempt needs the residual of the step's start
+     * (set_start_residual()): an integrator in time that weighs the
+     * forces of the start and of the end of a step, or the first step's
+     * acceleration. False by default: none is computed.
+     */
+    virtual bool
+    needs_start_residual() const;
+
+    /**
+     * @brief The residual of the step's start, after begin_attempt(): the
+     * material's internal force of the start-of-step stresses on this
+     * step's grid minus the external force at the step's start load
+     * factor, on every DoF (owned, with the ghosts updated). The other
+     * couplings' forces are not in it.
+     */
+    virtual void
+    set_start_residual(const NodalVector &internal_minus_external);
 
     /**
      * @brief Whether this coupling sets the points' volume change: then the
@@ -429,6 +448,8 @@ namespace impm
     ParameterHandler &prm;
     /** The background grid. */
     const BackgroundGrid<dim> &grid;
+    /** The scene's time (subsection `Time`). */
+    const Parameters::Time &time;
   };
 
   /**

@@ -48,6 +48,8 @@ namespace impm
     const Parameters::Output &output;
     /** The test summary's settings. */
     const Parameters::Testing &testing;
+    /** The scene's time (subsection `Time`). */
+    const Parameters::Time &time;
     /** The background grid (DoFs, face conditions). */
     const BackgroundGrid<dim> &grid;
     /** The material points in their current state. */
@@ -93,6 +95,10 @@ namespace impm
     unsigned int step_number = 0;
     /** Load factors at the start and at the target of the attempt. */
     double start = 0., target = 0.;
+    /** The time at the step's end in s (-1 in a scene without time). */
+    double end_time = -1.;
+    /** Whether the step ends the run (its target is the end). */
+    bool last = false;
     /** The Newton solve, with the outcome the step control judged. */
     NewtonRecord newton;
     /** DoFs of the step's linear system. */

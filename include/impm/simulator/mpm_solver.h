@@ -129,6 +129,8 @@ namespace impm
     TimerOutput        timer;
 
     BackgroundGrid<dim> grid;
+    /** The map from the steps' progress to time and load factor. */
+    LoadPath load_path;
     /** The couplings the scene asks for. */
     Couplings<dim>                             couplings;
     MaterialPoints<dim>                        material_points;

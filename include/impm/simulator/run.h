@@ -4,11 +4,13 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <impm/core/load_path.h>
 #include <impm/core/parameters.h>
 #include <impm/io/checkpoint.h>
 #include <impm/postprocess/output_parameters.h>
 #include <impm/solver/solver_parameters.h>
 
+#include <cmath>
 #include <string>
 
 namespace impm
@@ -47,6 +49,8 @@ namespace impm
     Parameters::Testing testing;
     /** The subsection "Checkpoint". */
     Parameters::Checkpoint checkpoint;
+    /** The subsection `Time`. */
+    Parameters::Time time;
 
     /** @brief Read every module's subsections. */
     void
@@ -57,6 +61,11 @@ namespace impm
       output.parse_parameters(prm);
       testing.parse_parameters(prm, dim);
       checkpoint.parse_parameters(prm);
+      time.parse_parameters(prm);
+      // A time step replaces the number of load steps.
+      if (time.time_step > 0.)
+        solver.n_load_steps = static_cast<unsigned int>(
+          std::ceil(time.end_time / time.time_step - 1e-9));
     }
   };
 

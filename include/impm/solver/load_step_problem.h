@@ -59,15 +59,22 @@ namespace impm
     reinit_vectors();
 
     /**
-     * @brief Start a step from load factor @p start to @p target: the
-     * couplings start their attempt (Coupling::begin_attempt()), the
-     * increment is zero but on the prescribed faces, which move by their
-     * share; the external force is that of @p target.
+     * @brief Start the step @p span: the couplings start their attempt
+     * (Coupling::begin_attempt()), the increment is zero but on the
+     * prescribed faces, which move by their share of the change of load
+     * factor; the external force is that of the step's end.
      */
     void
-    begin(const MaterialPoints<dim> &material_points,
-          const double               start,
-          const double               target);
+    begin(const MaterialPoints<dim> &material_points, const StepSpan &span);
+
+    /**
+     * @brief The residual of the step's start (the zero increment's
+     * internal force minus the external force of load factor
+     * @p start_load_factor) for the couplings that ask for it
+     * (Coupling::needs_start_residual()); nothing when none does.
+     */
+    void
+    set_start_residual(const double start_load_factor);
 
     Residual
     evaluate_residual() override;
