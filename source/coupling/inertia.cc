@@ -70,7 +70,8 @@ namespace impm
      *
      * The points' `velocity` and `acceleration` are declared point fields
      * (written, kept in checkpoints); the kinetic, elastic (strain) and
-     * total energy are step measures. A scene that does not name inertia creates none of this.
+     * total energy are step measures. A scene that does not name inertia
+     * creates none of this.
      *
      * @tparam dim Space dimension.
      */
@@ -246,9 +247,6 @@ namespace impm
         grid.reinit_vector(mass);
         grid.reinit_vector(momentum);
         grid.reinit_vector(mass_acceleration);
-        component_of.assign(mass.locally_owned_size() +
-                              mass.get_partitioner()->n_ghost_indices(),
-                            0);
         const auto        &layout         = material_points.layout();
         const unsigned int velocity_first = layout.coupling_field("velocity");
         const unsigned int acceleration_first =
@@ -263,7 +261,6 @@ namespace impm
                 {
                   const unsigned int dof    = step.dofs[v * dim + i];
                   const double       weight = step.support.weights[v] * m;
-                  component_of[dof]         = i;
                   mass.local_element(dof) += weight;
                   momentum.local_element(dof) +=
                     weight * properties[velocity_first + i];
@@ -372,7 +369,7 @@ namespace impm
                           k_r * p);
               internal_force.local_element(i) += force;
               norm_squared += force * force;
-              force_on_material[component_of[i]] += force;
+              force_on_material[grid.component(i)] += force;
             }
         inertial_force_norm = std::sqrt(
           Utilities::MPI::sum(norm_squared,
@@ -492,9 +489,9 @@ namespace impm
         const auto eigen = eigenvectors(step.update.elastic_left_cauchy_green);
         SymmetricTensor<2, 3> log_strain;
         for (unsigned int k = 0; k < 3; ++k)
-          log_strain += 0.5 * std::log(eigen[k].first) *
-                        symmetrize(outer_product(eigen[k].second,
-                                                 eigen[k].second));
+          log_strain +=
+            0.5 * std::log(eigen[k].first) *
+            symmetrize(outer_product(eigen[k].second, eigen[k].second));
         return step.initial_volume * 0.5 *
                (step.update.kirchhoff_stress * log_strain);
       }
@@ -538,8 +535,6 @@ namespace impm
       double              inertial_force_norm = 0.;
       double              kinetic_energy      = 0.;
       double              strain_energy       = 0.;
-      /** Each local DoF's component (from the points' supports). */
-      std::vector<unsigned char> component_of;
       /** The inertial force of the last add_forces() (this process's
        *  owned DoFs) and of the accepted step (all). */
       Tensor<1, dim> force_on_material, accepted_force;
