@@ -190,6 +190,14 @@ namespace impm
           }
       }
 
+      /** @brief True: the mass matrix holds the material in every
+       *  direction (a body in free flight is a regular problem). */
+      bool
+      holds_material(const unsigned int) const override
+      {
+        return true;
+      }
+
       PointFields
       point_fields() const override
       {
@@ -486,7 +494,8 @@ namespace impm
       static double
       stored_energy(const PointStep<dim> &step)
       {
-        const auto eigen = eigenvectors(step.update.elastic_left_cauchy_green);
+        const auto eigen =
+          spectral_decomposition(step.update.elastic_left_cauchy_green);
         SymmetricTensor<2, 3> log_strain;
         for (unsigned int k = 0; k < 3; ++k)
           log_strain +=

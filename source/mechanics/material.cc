@@ -203,6 +203,21 @@ namespace impm
 
 
 
+  std::array<std::pair<double, Tensor<1, 3>>, 3>
+  spectral_decomposition(const SymmetricTensor<2, 3> &tensor)
+  {
+    try
+      {
+        return eigenvectors(tensor);
+      }
+    catch (const ExceptionBase &)
+      {
+        return eigenvectors(tensor, SymmetricTensorEigenvectorMethod::jacobi);
+      }
+  }
+
+
+
   std::array<double, 3>
   decompose_trial_strain(const Tensor<2, 3>          &dF,
                          const SymmetricTensor<2, 3> &be_n,
@@ -211,7 +226,7 @@ namespace impm
     const Tensor<2, 3>          be_n_full = be_n;
     const SymmetricTensor<2, 3> be_trial =
       symmetrize(dF * be_n_full * transpose(dF));
-    const auto            eigen = eigenvectors(be_trial);
+    const auto            eigen = spectral_decomposition(be_trial);
     std::array<double, 3> strain;
     for (unsigned int a = 0; a < 3; ++a)
       {
@@ -270,7 +285,7 @@ namespace impm
                                    const double                 mu,
                                    const SymmetricTensor<2, 3> &tau)
   {
-    const auto            eigen      = eigenvectors(tau);
+    const auto            eigen      = spectral_decomposition(tau);
     const double          volumetric = trace(tau) / (3. * lambda + 2. * mu);
     SymmetricTensor<2, 3> be;
     for (unsigned int a = 0; a < 3; ++a)

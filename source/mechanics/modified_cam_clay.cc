@@ -451,7 +451,7 @@ namespace impm
       }
     const double volumetric =
       kappa_star * std::log(p / parameters.reference_pressure);
-    const auto            eigen = eigenvectors(tau);
+    const auto            eigen = spectral_decomposition(tau);
     SymmetricTensor<2, 3> be;
     for (unsigned int a = 0; a < 3; ++a)
       {

@@ -427,7 +427,7 @@ namespace impm
             // lp = lp0 U_ii with U the right stretch tensor of F = R U.
             const SymmetricTensor<2, 3> U =
               symmetrize(transpose(F) * F); // C = U^2
-            const auto eigen = eigenvectors(U);
+            const auto eigen = spectral_decomposition(U);
             const auto initial_half_length =
               point.get_properties().data() +
               PointProperties<dim>::initial_domain_half_length;

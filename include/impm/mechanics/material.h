@@ -55,6 +55,19 @@ namespace impm
   };
 
   /**
+   * @brief The eigenvalues and unit eigenvectors of @p tensor, in
+   * descending order of the eigenvalues.
+   *
+   * deal.II's default (hybrid) algorithm, and Jacobi's where that one
+   * does not converge: its QL iteration fails on tensors within round-off
+   * of a multiple of the identity (a trial strain of 1e-8, the first step
+   * of a small load), which would otherwise fail a Newton iteration that is
+   * fine.
+   */
+  std::array<std::pair<double, Tensor<1, 3>>, 3>
+  spectral_decomposition(const SymmetricTensor<2, 3> &tensor);
+
+  /**
    * @brief The spectral decomposition of the trial elastic left
    * Cauchy-Green tensor @f$b^e_{tr} = \Delta F\, b^e_n\, \Delta F^T@f$
    * into @p result's trial eigenvalues and eigenvectors (descending).
