@@ -192,15 +192,16 @@ namespace impm
             std::string("Condition ") + face,
             "none",
             Patterns::Selection(
-              "none|roller|fixed|prescribed|prescribed normal"),
+              "none|roller|fixed|prescribed|prescribed normal|normal only"),
             std::string("Displacement condition on the grid face ") + face +
               ": none, roller (normal component zero), fixed (all "
               "components zero), prescribed (all components follow "
               "'Displacement " +
               face +
-              "', ramped over the load steps) or prescribed normal (the "
-              "normal component follows it, the others are free). z faces "
-              "are used in 3D only.");
+              "', ramped over the load steps), prescribed normal (the "
+              "normal component follows it, the others are free) or normal "
+              "only (the tangential components zero, the normal one free: "
+              "the sides of a shear column). z faces are used in 3D only.");
           prm.declare_entry(std::string("Displacement ") + face,
                             "0, 0",
                             Patterns::List(Patterns::Double(), 2, 3),

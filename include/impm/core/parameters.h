@@ -78,12 +78,20 @@ namespace impm
       /** All components follow the face's displacement (ramped). */
       prescribed,
       /** The normal component follows it, the others are free. */
-      prescribed_normal
+      prescribed_normal,
+      /** The tangential components zero, the normal one free (a face that
+       *  moves only along its normal: the sides of a shear column). */
+      normal_only
     };
 
     /** @brief The scene's names of the face conditions, in enum order. */
-    constexpr std::array<const char *, 5> face_condition_names = {
-      {"none", "roller", "fixed", "prescribed", "prescribed normal"}};
+    constexpr std::array<const char *, 6> face_condition_names = {
+      {"none",
+       "roller",
+       "fixed",
+       "prescribed",
+       "prescribed normal",
+       "normal only"}};
 
     /**
      * @brief Whether @p condition on face @p face holds component
@@ -102,6 +110,8 @@ namespace impm
           case FaceCondition::roller:
           case FaceCondition::prescribed_normal:
             return component == face / 2;
+          case FaceCondition::normal_only:
+            return component != face / 2;
           default:
             return false;
         }
