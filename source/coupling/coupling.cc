@@ -111,6 +111,24 @@ namespace impm
 
   template <int dim>
   bool
+  Coupling<dim>::solves_step() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  std::string
+  Coupling<dim>::step_increment(const LoadStepSystem<dim> &, NodalVector &)
+  {
+    return "";
+  }
+
+
+
+  template <int dim>
+  bool
   Coupling<dim>::sets_point_volumes() const
   {
     return false;
@@ -403,7 +421,22 @@ namespace impm
     n_global = 0;
     for (const auto &coupling : couplings)
       n_global += coupling->n_global_unknowns();
+    // An explicit step has no matrix.
+    if (step_solver() != nullptr)
+      return false;
     return system.make_pattern(blocks);
+  }
+
+
+
+  template <int dim>
+  Coupling<dim> *
+  Couplings<dim>::step_solver() const
+  {
+    for (const auto &coupling : couplings)
+      if (coupling->solves_step())
+        return coupling.get();
+    return nullptr;
   }
 
 

@@ -6,9 +6,14 @@
 
 #include <impm/base/errors.h>
 #include <impm/base/names.h>
+#include <impm/coupling/central_difference.h>
 #include <impm/coupling/coupling.h>
+#include <impm/coupling/nodal_momentum.h>
+#include <impm/coupling/time_integrator.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -61,12 +66,34 @@ namespace impm
      * start, @f$M a^0 = f_{ext}(0) - f_{int}(0)@f$ (a body under gravity
      * applied at once starts falling at g), not the points' zero.
      *
+     * The explicit integrators (`explicit MUSL`, `explicit USL`) are the
+     * central difference rule with the lumped mass: the nodes'
+     * acceleration from the balance at the step's start, @f$a_I = -r^n_I /
+     * M_I@f$ (minus the mass damping's @f$\alpha_R v_I^n@f$), their new
+     * velocity @f$v_I^{n+1} = v_I^n + \Delta t\, a_I@f$, the points'
+     * velocity from it (the FLIP/PIC blend below) and the increment
+     * @f$\Delta u_I = \Delta t\, v_I^{n+1}@f$: with the nodes' velocity
+     * of the update (USL), or mapped again from the updated points'
+     * momentum (MUSL, Sulsky's modified update). The increment goes
+     * through the same stress update as an implicit step (the pulled-back
+     * stress of the start-of-step grid); there is no matrix and no Newton
+     * iteration (Coupling::solves_step()). The step is stable below
+     * @f$\Delta t_c = C\, h_{min} / c_p@f$, with the Courant number C,
+     * the smallest cell size and the largest speed of sound of the
+     * points, @f$c_p = \sqrt{M / \rho}@f$ from their material's P-wave
+     * modulus (Material::p_wave_modulus()) and current density, checked
+     * every step: the first step refuses a time step above it (naming
+     * it), a later one is cut.
+     *
      * A converged step updates each point (FLIP): @f$v_p \mathrel{+}=
      * \sum_I N_{Ip} (v_I^{n+1} - v_I^n)@f$, @f$a_p = \sum_I N_{Ip}
      * a_I^{n+1}@f$. The trapezoidal rule (@f$\beta = 1/4, \gamma =
      * 1/2@f$, the default) conserves the energy of the nodal system; the
      * mapping between points and nodes at each step's start loses the part
-     * of the points' kinetic energy the nodes cannot represent.
+     * of the points' kinetic energy the nodes cannot represent. A FLIP
+     * fraction @f$\phi < 1@f$ blends in PIC: @f$v_p = \phi\,(v_p +
+     * \sum_I N_{Ip}\Delta v_I) + (1 - \phi) \sum_I N_{Ip} v_I^{n+1}@f$,
+     * which damps the points' velocity noise.
      *
      * The points' `velocity` and `acceleration` are declared point fields
      * (written, kept in checkpoints); the kinetic, elastic (strain) and
@@ -90,41 +117,7 @@ namespace impm
                           "solved in time (it needs 'Time/End time'). Off: "
                           "the quasi-static statement, with no mass matrix "
                           "and no velocities stored.");
-        prm.declare_entry("Integrator",
-                          "Newmark",
-                          Patterns::Selection("Newmark|generalised-alpha"),
-                          "The time integrator: 'Newmark' (with 'Newmark "
-                          "beta' and 'Newmark gamma'; the trapezoidal rule "
-                          "by default) or 'generalised-alpha' (Chung and "
-                          "Hulbert, with 'Spectral radius'), both implicit "
-                          "in full Newton.");
-        prm.declare_entry("Newmark beta",
-                          "0.25",
-                          Patterns::Double(0., 0.5),
-                          "beta of the Newmark rule (0.25 with gamma = 0.5: "
-                          "the trapezoidal rule, unconditionally stable and "
-                          "without numerical damping); from above 0 to "
-                          "0.5.");
-        prm.declare_entry("Newmark gamma",
-                          "0.5",
-                          Patterns::Double(0., 1.),
-                          "gamma of the Newmark rule (0.5: no numerical "
-                          "damping; above 0.5 damps); from 0.5 to 1, and "
-                          "at most 4 beta for unconditional stability.");
-        prm.declare_entry("Spectral radius",
-                          "0.8",
-                          Patterns::Double(0., 1.),
-                          "generalised-alpha's spectral radius at infinite "
-                          "frequency, from 0 (the most damping of the "
-                          "highest frequencies) to 1 (none: the "
-                          "trapezoidal rule's energy conservation).");
-        prm.declare_entry("Mass damping",
-                          "0",
-                          Patterns::Double(0.),
-                          "The mass-proportional Rayleigh damping "
-                          "coefficient alpha in 1/s (damping force alpha M "
-                          "v; a mode of angular frequency omega is damped "
-                          "at the ratio alpha / (2 omega)). 0: none.");
+        TimeIntegrator::declare_parameters(prm);
         prm.declare_entry("Initial velocity",
                           "0",
                           Patterns::Anything(),
@@ -138,36 +131,16 @@ namespace impm
       /** @brief The inertia of a scene (from its subsection; it needs the
        *  scene's time). */
       explicit Inertia(const CouplingInputs<dim> &inputs)
-        : generalised_alpha(inputs.prm.get("Integrator") == "generalised-alpha")
-        , spectral_radius(inputs.prm.get_double("Spectral radius"))
-        , alpha_m(generalised_alpha ?
-                    (2. * spectral_radius - 1.) / (spectral_radius + 1.) :
-                    0.)
-        , alpha_f(generalised_alpha ? spectral_radius / (spectral_radius + 1.) :
-                                      0.)
-        , beta(generalised_alpha ?
-                 0.25 * (1. - alpha_m + alpha_f) * (1. - alpha_m + alpha_f) :
-                 inputs.prm.get_double("Newmark beta"))
-        , gamma(generalised_alpha ? 0.5 - alpha_m + alpha_f :
-                                    inputs.prm.get_double("Newmark gamma"))
-        , mass_damping(inputs.prm.get_double("Mass damping"))
+        : integrator(inputs.prm)
         , initial_velocity_expression(inputs.prm.get("Initial velocity"))
         , grid(inputs.grid)
+        , nodes(inputs.grid)
       {
         if (!inputs.time.in_time())
           throw InputError("Inertia needs time: set 'Time/End time' above 0 "
                            "(the load steps are then time steps).");
-        if (!(beta > 0.))
-          throw InputError("Parameter 'Inertia/Newmark beta' = '" +
-                           inputs.prm.get("Newmark beta") +
-                           "' is not allowed: it must be > 0 (an implicit "
-                           "rule).");
-        if (gamma < 0.5 || 4. * beta < gamma)
-          throw InputError(
-            "Inertia: Newmark gamma = " + inputs.prm.get("Newmark gamma") +
-            " with beta = " + inputs.prm.get("Newmark beta") +
-            " is not unconditionally stable: it needs 0.5 <= gamma <= 4 "
-            "beta.");
+        if (integrator.is_explicit())
+          check_time_step(inputs);
         if (initial_velocity_expression != "0")
           {
             initial_velocity = std::make_unique<FunctionParser<dim>>(dim);
@@ -208,17 +181,7 @@ namespace impm
       descriptions() const override
       {
         std::ostringstream out;
-        if (generalised_alpha)
-          out << "inertia: generalised-alpha (spectral radius "
-              << spectral_radius << ": alpha_m " << alpha_m << ", alpha_f "
-              << alpha_f << ")";
-        else
-          out << "inertia: Newmark (beta " << beta << ", gamma " << gamma
-              << (beta == 0.25 && gamma == 0.5 ? ", the trapezoidal rule" : "")
-              << ")";
-        out << ", lumped mass";
-        if (mass_damping > 0.)
-          out << ", mass damping " << mass_damping << " 1/s";
+        out << "inertia: " << integrator.description();
         if (initial_velocity)
           out << ", initial velocity " << initial_velocity_expression;
         return {out.str()};
@@ -252,48 +215,17 @@ namespace impm
                     const StepSpan            &span) override
       {
         time_step = span.time_step();
-        grid.reinit_vector(mass);
-        grid.reinit_vector(momentum);
-        grid.reinit_vector(mass_acceleration);
-        const auto        &layout         = material_points.layout();
-        const unsigned int velocity_first = layout.coupling_field("velocity");
-        const unsigned int acceleration_first =
-          layout.coupling_field("acceleration");
-        for (const auto &point : material_points.particles())
-          {
-            const auto            properties = point.get_properties();
-            const PointStep<dim> &step       = system.point_steps.of(point);
-            const double          m = PointState<dim>(properties).mass();
-            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-              for (unsigned int i = 0; i < dim; ++i)
-                {
-                  const unsigned int dof    = step.dofs[v * dim + i];
-                  const double       weight = step.support.weights[v] * m;
-                  mass.local_element(dof) += weight;
-                  momentum.local_element(dof) +=
-                    weight * properties[velocity_first + i];
-                  mass_acceleration.local_element(dof) +=
-                    weight * properties[acceleration_first + i];
-                }
-          }
-        for (NodalVector *vector : {&mass, &momentum, &mass_acceleration})
-          {
-            vector->compress(VectorOperation::add);
-            vector->update_ghost_values();
-          }
-        // The constrained DoFs do not move with the material: no velocity
-        // or acceleration there (their motion is prescribed).
-        in_system.assign(n_local(), false);
-        for (unsigned int i = 0; i < n_local(); ++i)
-          {
-            in_system[i] = system.system_index(i) != numbers::invalid_dof_index;
-            if (!in_system[i])
-              {
-                momentum.local_element(i)          = 0.;
-                mass_acceleration.local_element(i) = 0.;
-              }
-          }
+        nodes.map_points(material_points, system);
         start_residual.clear();
+        current_points = &material_points;
+        current_system = &system;
+        if (integrator.is_explicit())
+          stable_step_size =
+            stable_time_step(material_points,
+                             system.point_steps,
+                             grid.cartesian(),
+                             integrator.courant_number,
+                             grid.get_triangulation().get_communicator());
       }
 
       /** @brief Generalised-alpha weighs the start's residual; the first
@@ -301,7 +233,44 @@ namespace impm
       bool
       needs_start_residual() const override
       {
-        return alpha_f > 0. || !started;
+        return integrator.alpha_f > 0. || !started || integrator.is_explicit();
+      }
+
+      /** @brief True with an explicit integrator. */
+      bool
+      solves_step() const override
+      {
+        return integrator.is_explicit();
+      }
+
+      /** @brief The explicit step's increment (set_start_residual()
+       *  found it), or why the step is cut: its time step above the stable
+       *  one. On the first step that is an InputError naming the stable
+       *  step. */
+      std::string
+      step_increment(const LoadStepSystem<dim> &system,
+                     NodalVector               &increment) override
+      {
+        if (time_step > stable_step_size * (1. + 1e-12))
+          {
+            std::ostringstream out;
+            out << "the time step " << time_step
+                << " s is above the stable explicit step " << stable_step_size
+                << " s (Courant number " << integrator.courant_number
+                << ", smallest cell " << smallest_cell_size(grid.cartesian())
+                << " m, speed of sound "
+                << integrator.courant_number *
+                     smallest_cell_size(grid.cartesian()) / stable_step_size
+                << " m/s)";
+            if (!started)
+              throw InputError("Inertia: " + out.str() +
+                               ": set 'Time/Time step' to at most that.");
+            return out.str();
+          }
+        for (unsigned int i = 0; i < n_local(); ++i)
+          if (system.system_index(i) != numbers::invalid_dof_index)
+            increment.local_element(i) = explicit_increment[i];
+        return "";
       }
 
       /** @brief Keep the start's residual (generalised-alpha), and on the
@@ -310,18 +279,34 @@ namespace impm
       void
       set_start_residual(const NodalVector &internal_minus_external) override
       {
-        if (alpha_f > 0.)
+        if (integrator.is_explicit())
+          {
+            central_difference_step(nodes,
+                                    internal_minus_external,
+                                    time_step,
+                                    integrator.mass_damping,
+                                    integrator.explicit_order,
+                                    integrator.flip_fraction,
+                                    *current_points,
+                                    current_system->point_steps,
+                                    explicit_increment,
+                                    point_velocities,
+                                    point_accelerations);
+            return;
+          }
+        if (integrator.alpha_f > 0.)
           {
             start_residual.resize(n_local());
             for (unsigned int i = 0; i < n_local(); ++i)
-              start_residual[i] =
-                in_system[i] ? internal_minus_external.local_element(i) : 0.;
+              start_residual[i] = nodes.in_system(i) ?
+                                    internal_minus_external.local_element(i) :
+                                    0.;
           }
         if (!started)
           for (unsigned int i = 0; i < n_local(); ++i)
-            if (in_system[i] && mass.local_element(i) > 0.)
-              mass_acceleration.local_element(i) =
-                -internal_minus_external.local_element(i);
+            if (nodes.in_system(i) && nodes.mass(i) > 0.)
+              nodes.set_mass_acceleration(
+                i, -internal_minus_external.local_element(i));
       }
 
       /** @brief The mass term of the matrix on the diagonal of the owned
@@ -332,13 +317,17 @@ namespace impm
                  const LoadStepSystem<dim>      &system,
                  TrilinosWrappers::SparseMatrix &matrix) override
       {
-        const double c1 = 1. / (beta * time_step * time_step);
-        const double c  = (k_m() + mass_damping * gamma * time_step) * c1;
-        for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+        if (integrator.is_explicit())
+          return false;
+        const double c1 = 1. / (integrator.beta * time_step * time_step);
+        const double c  = (integrator.k_m() + integrator.mass_damping *
+                                               integrator.gamma * time_step) *
+                         c1;
+        for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
           {
             const auto row = system.system_index(i);
-            if (row != numbers::invalid_dof_index && mass.local_element(i) > 0.)
-              matrix.add(row, row, c * mass.local_element(i));
+            if (row != numbers::invalid_dof_index && nodes.mass(i) > 0.)
+              matrix.add(row, row, c * nodes.mass(i));
           }
         return true;
       }
@@ -350,31 +339,35 @@ namespace impm
                  const NodalVector &increment,
                  NodalVector       &internal_force) override
       {
-        const double c1           = 1. / (beta * time_step * time_step);
-        const double c2           = 1. / (beta * time_step);
-        const double c3           = 1. / (2. * beta) - 1.;
-        const double k_a          = alpha_m / (1. - alpha_f);
-        const double k_r          = alpha_f / (1. - alpha_f);
+        if (integrator.is_explicit())
+          return;
+        const double c1  = 1. / (integrator.beta * time_step * time_step);
+        const double c2  = 1. / (integrator.beta * time_step);
+        const double c3  = 1. / (2. * integrator.beta) - 1.;
+        const double k_a = integrator.alpha_m / (1. - integrator.alpha_f);
+        const double k_r = integrator.alpha_f / (1. - integrator.alpha_f);
         double       norm_squared = 0.;
         force_on_material         = Tensor<1, dim>();
-        for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
-          if (in_system[i])
+        for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
+          if (nodes.in_system(i))
             {
-              const double p = momentum.local_element(i);
-              const double q = mass_acceleration.local_element(i);
+              const double p = nodes.momentum(i);
+              const double q = nodes.mass_acceleration(i);
               // M a^{n+1}
               const double mass_times_acceleration =
-                c1 * mass.local_element(i) * increment.local_element(i) -
-                c2 * p - c3 * q;
-              double force = k_m() * mass_times_acceleration + k_a * q;
+                c1 * nodes.mass(i) * increment.local_element(i) - c2 * p -
+                c3 * q;
+              double force =
+                integrator.k_m() * mass_times_acceleration + k_a * q;
               if (!start_residual.empty())
                 force += k_r * start_residual[i];
-              if (mass_damping > 0.)
-                force += mass_damping *
-                         (p +
-                          time_step * ((1. - gamma) * q +
-                                       gamma * mass_times_acceleration) +
-                          k_r * p);
+              if (integrator.mass_damping > 0.)
+                force +=
+                  integrator.mass_damping *
+                  (p +
+                   time_step * ((1. - integrator.gamma) * q +
+                                integrator.gamma * mass_times_acceleration) +
+                   k_r * p);
               internal_force.local_element(i) += force;
               norm_squared += force * force;
               force_on_material[grid.component(i)] += force;
@@ -406,54 +399,52 @@ namespace impm
              const LoadStepSystem<dim> &system,
              const NodalVector         &increment) override
       {
-        const double c3 = 1. / (2. * beta) - 1.;
-        // The nodes' new acceleration and change of velocity (owned and
-        // ghost DoFs: the points read both).
-        std::vector<double> new_acceleration(n_local()),
-          velocity_change(n_local());
-        for (unsigned int i = 0; i < n_local(); ++i)
+        const auto &steps = system.point_steps;
+        if (!integrator.is_explicit())
           {
-            const double m = mass.local_element(i);
-            const double v = m > 0. ? momentum.local_element(i) / m : 0.;
-            const double a =
-              m > 0. ? mass_acceleration.local_element(i) / m : 0.;
-            new_acceleration[i] = (increment.local_element(i) - time_step * v) /
-                                    (beta * time_step * time_step) -
-                                  c3 * a;
-            velocity_change[i] =
-              time_step * ((1. - gamma) * a + gamma * new_acceleration[i]);
+            const double c3 = 1. / (2. * integrator.beta) - 1.;
+            // The nodes' new acceleration, velocity and change of velocity
+            // (owned and ghost DoFs: the points read both).
+            std::vector<double> new_acceleration(n_local()),
+              new_velocity(n_local()), velocity_change(n_local());
+            for (unsigned int i = 0; i < n_local(); ++i)
+              {
+                const double m = nodes.mass(i);
+                const double v = m > 0. ? nodes.momentum(i) / m : 0.;
+                const double a = m > 0. ? nodes.mass_acceleration(i) / m : 0.;
+                new_acceleration[i] =
+                  (increment.local_element(i) - time_step * v) /
+                    (integrator.beta * time_step * time_step) -
+                  c3 * a;
+                velocity_change[i] =
+                  time_step * ((1. - integrator.gamma) * a +
+                               integrator.gamma * new_acceleration[i]);
+                new_velocity[i] = v + velocity_change[i];
+              }
+            nodes.update_points(material_points,
+                                steps,
+                                integrator.flip_fraction,
+                                velocity_change,
+                                new_velocity,
+                                new_acceleration,
+                                point_velocities,
+                                point_accelerations);
           }
-        const auto         &layout         = material_points.layout();
-        const unsigned int  velocity_first = layout.coupling_field("velocity");
-        const auto         &steps          = system.point_steps;
-        std::vector<double> velocities(steps.size() * dim),
-          accelerations(steps.size() * dim);
         double energy = 0., elastic_energy = 0.;
         for (const auto &point : material_points.particles())
           {
-            const auto            properties = point.get_properties();
-            const unsigned int    p          = steps.index_of(point);
-            const PointStep<dim> &step       = steps[p];
-            elastic_energy += stored_energy(step);
+            const unsigned int p = steps.index_of(point);
+            elastic_energy +=
+              steps[p].initial_volume * elastic_energy_density(steps[p].update);
             for (unsigned int i = 0; i < dim; ++i)
-              {
-                double dv = 0., a = 0.;
-                for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-                  {
-                    const unsigned int dof = step.dofs[v * dim + i];
-                    dv += step.support.weights[v] * velocity_change[dof];
-                    a += step.support.weights[v] * new_acceleration[dof];
-                  }
-                velocities[p * dim + i] = properties[velocity_first + i] + dv;
-                accelerations[p * dim + i] = a;
-                energy += 0.5 * PointState<dim>(properties).mass() *
-                          velocities[p * dim + i] * velocities[p * dim + i];
-              }
+              energy += 0.5 * PointState<dim>(point.get_properties()).mass() *
+                        point_velocities[p * dim + i] *
+                        point_velocities[p * dim + i];
           }
-        material_points.set_coupling_field("velocity", steps, velocities);
+        material_points.set_coupling_field("velocity", steps, point_velocities);
         material_points.set_coupling_field("acceleration",
                                            steps,
-                                           accelerations);
+                                           point_accelerations);
         const MPI_Comm communicator =
           grid.get_triangulation().get_communicator();
         kinetic_energy = Utilities::MPI::sum(energy, communicator);
@@ -485,59 +476,59 @@ namespace impm
       }
 
     private:
-      /** A point's elastic energy at the step's end (its converged
-       *  update), @f$V_0\,\tfrac12\,\tau : \varepsilon_e@f$
-       *  with the elastic logarithmic strain @f$\varepsilon_e = \tfrac12
-       *  \ln b_e@f$: exact for the elastic laws linear in the logarithmic
-       *  strain (Hencky, and the plastic models built on it), an estimate
-       *  for pressure-dependent elasticity (Cam-clay). */
-      static double
-      stored_energy(const PointStep<dim> &step)
+      /** @brief Refuse a nominal time step above the stable explicit step
+       *  of the bodies' initial state (their density and P-wave modulus),
+       *  naming the stable step. */
+      void
+      check_time_step(const CouplingInputs<dim> &inputs) const
       {
-        const auto eigen =
-          spectral_decomposition(step.update.elastic_left_cauchy_green);
-        SymmetricTensor<2, 3> log_strain;
-        for (unsigned int k = 0; k < 3; ++k)
-          log_strain +=
-            0.5 * std::log(eigen[k].first) *
-            symmetrize(outer_product(eigen[k].second, eigen[k].second));
-        return step.initial_volume * 0.5 *
-               (step.update.kirchhoff_stress * log_strain);
-      }
-
-      /** The weight of the end-of-step inertial force, (1 - alpha_m) / (1 -
-       *  alpha_f). */
-      double
-      k_m() const
-      {
-        return (1. - alpha_m) / (1. - alpha_f);
+        double largest = 0.;
+        for (const auto &body : inputs.parameters.bodies)
+          largest =
+            std::max(largest, body.material->p_wave_modulus() / body.density);
+        const double h = smallest_cell_size(grid.cartesian());
+        const double stable =
+          integrator.courant_number * h / std::sqrt(largest);
+        if (inputs.time.nominal_step > stable * (1. + 1e-12))
+          {
+            std::ostringstream out;
+            out << "Inertia: the time step " << inputs.time.nominal_step
+                << " s is above the stable explicit step " << stable
+                << " s (Courant number " << integrator.courant_number
+                << ", smallest cell " << h << " m, speed of sound "
+                << std::sqrt(largest)
+                << " m/s): set 'Time/Time step' to at most that.";
+            throw InputError(out.str());
+          }
       }
 
       /** The number of local DoFs (owned and ghosts). */
       unsigned int
       n_local() const
       {
-        return mass.locally_owned_size() +
-               mass.get_partitioner()->n_ghost_indices();
+        return nodes.n_local();
       }
 
-      const bool                           generalised_alpha;
-      const double                         spectral_radius;
-      const double                         alpha_m;
-      const double                         alpha_f;
-      const double                         beta;
-      const double                         gamma;
-      const double                         mass_damping;
+      /** The time integrator. */
+      const TimeIntegrator                 integrator;
       const std::string                    initial_velocity_expression;
       std::unique_ptr<FunctionParser<dim>> initial_velocity;
       const BackgroundGrid<dim>           &grid;
       /** Whether a step was accepted (or the run resumed): the points
        *  carry accelerations. */
-      bool        started   = false;
-      double      time_step = 0.;
-      NodalVector mass, momentum, mass_acceleration;
-      /** Whether each local DoF is in the system (not constrained). */
-      std::vector<bool> in_system;
+      bool   started   = false;
+      double time_step = 0.;
+      /** The stable explicit time step of the step's start. */
+      double stable_step_size = std::numeric_limits<double>::max();
+      /** The step's points and system (set in begin_attempt()). */
+      const MaterialPoints<dim> *current_points = nullptr;
+      const LoadStepSystem<dim> *current_system = nullptr;
+      /** The explicit step's increment on the local DoFs. */
+      std::vector<double> explicit_increment;
+      /** The points' new velocities and accelerations (by step index). */
+      std::vector<double> point_velocities, point_accelerations;
+      /** The nodes' mass and momentum of the step's start. */
+      NodalMomentum<dim> nodes;
       /** The residual of the step's start on the local DoFs (empty
        *  unless generalised-alpha). */
       std::vector<double> start_residual;

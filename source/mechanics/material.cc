@@ -218,6 +218,19 @@ namespace impm
 
 
 
+  double
+  elastic_energy_density(const ConstitutiveUpdate &update)
+  {
+    const auto eigen = spectral_decomposition(update.elastic_left_cauchy_green);
+    SymmetricTensor<2, 3> log_strain;
+    for (unsigned int k = 0; k < 3; ++k)
+      log_strain += 0.5 * std::log(eigen[k].first) *
+                    symmetrize(outer_product(eigen[k].second, eigen[k].second));
+    return 0.5 * (update.kirchhoff_stress * log_strain);
+  }
+
+
+
   std::array<double, 3>
   decompose_trial_strain(const Tensor<2, 3>          &dF,
                          const SymmetricTensor<2, 3> &be_n,

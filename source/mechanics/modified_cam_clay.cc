@@ -490,6 +490,14 @@ namespace impm
 
 
 
+  double
+  ModifiedCamClay::p_wave_modulus() const
+  {
+    return parameters.reference_pressure / kappa_star + 4. * mu / 3.;
+  }
+
+
+
   namespace
   {
     const bool modified_cam_clay_registered = MaterialList::register_plugin(

@@ -397,7 +397,8 @@ namespace impm
     record.last         = control.target() >= 1.;
     record.system_dofs  = system.n_dofs();
     problem.begin(material_points, span);
-    record.newton                       = newton_solver.solve(problem);
+    record.newton = problem.is_explicit() ? problem.explicit_step() :
+                                            newton_solver.solve(problem);
     const TangentCheckResult check      = problem.take_tangent_check();
     record.tangent_difference           = check.largest_row_difference;
     record.tangent_columns_across_kinks = check.columns_across_kinks;

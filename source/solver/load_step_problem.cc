@@ -84,6 +84,51 @@ namespace impm
 
 
   template <int dim>
+  NewtonRecord
+  LoadStepProblem<dim>::explicit_step()
+  {
+    NewtonRecord record;
+    {
+      TimerOutput::Scope scope(timer, "point update");
+      const std::string  failure =
+        couplings.step_solver()->step_increment(system, displacement_increment);
+      if (!failure.empty())
+        {
+          record.outcome = NewtonOutcome::above_stable_step;
+          record.residuals.push_back(1.);
+          return record;
+        }
+    }
+    {
+      TimerOutput::Scope scope(timer, "stress update");
+      if (!assembler.update_stresses(displacement_increment))
+        {
+          record.outcome = NewtonOutcome::inverted_point;
+          record.residuals.push_back(1.);
+          return record;
+        }
+    }
+    TimerOutput::Scope scope(timer, "assembly");
+    add_internal_forces();
+    // The free DoFs' residual is the inertial force the step leaves.
+    explicit_inertial_force = Tensor<1, dim>();
+    for (unsigned int i = 0; i < internal_force.locally_owned_size(); ++i)
+      if (system.system_index(i) != numbers::invalid_dof_index)
+        explicit_inertial_force[grid.component(i)] +=
+          external_force.local_element(i) - internal_force.local_element(i);
+    for (unsigned int d = 0; d < dim; ++d)
+      explicit_inertial_force[d] =
+        Utilities::MPI::sum(explicit_inertial_force[d],
+                            grid.get_triangulation().get_communicator());
+    record.outcome = NewtonOutcome::converged;
+    record.residuals.push_back(0.);
+    record.last_internal_force_norm = internal_force.l2_norm();
+    return record;
+  }
+
+
+
+  template <int dim>
   bool
   LoadStepProblem<dim>::update_forces()
   {

@@ -31,6 +31,9 @@ namespace impm
       double time_step = 0.;
       /** The load factor as an expression in t (empty: t / end time). */
       std::string load_factor;
+      /** The nominal time step of the run, End time over the number of
+       *  steps (set with the solver's parameters; 0 without time). */
+      double nominal_step = 0.;
 
       /** @brief Declare the subsection's entries. */
       static void

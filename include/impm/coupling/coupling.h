@@ -254,6 +254,26 @@ namespace impm
     set_start_residual(const NodalVector &internal_minus_external);
 
     /**
+     * @brief Whether this coupling finds each step's increment itself
+     * (explicit time integration): the system then has no matrix and a
+     * step no Newton iteration; step_increment() gives the increment after
+     * set_start_residual(). At most one coupling of a scene may. False by
+     * default.
+     */
+    virtual bool
+    solves_step() const;
+
+    /**
+     * @brief The step's increment at the DoFs of the system, owned and
+     * ghost (the others keep theirs: zero, or a prescribed face's), when
+     * solves_step().
+     * @return The empty string, or why the step must be cut (a time step
+     *   above the stable one). Collective.
+     */
+    virtual std::string
+    step_increment(const LoadStepSystem<dim> &system, NodalVector &increment);
+
+    /**
      * @brief Whether this coupling sets the points' volume change: then the
      * Assembler hands it every point's stress update
      * (update_stresses()), and changes each point's tangent through
@@ -526,6 +546,11 @@ namespace impm
     bool
     set_up_system(const MaterialPoints<dim> &material_points,
                   LoadStepSystem<dim>       &system);
+
+    /** @brief The coupling that finds each step's increment itself
+     *  (Coupling::solves_step(): explicit time integration), or null. */
+    Coupling<dim> *
+    step_solver() const;
 
     /** @brief Sum of every coupling's force_from_material(). */
     Tensor<1, dim>

@@ -175,6 +175,14 @@ namespace impm
       return parameters.youngs_modulus;
     }
 
+    double
+    p_wave_modulus() const override
+    {
+      const double nu = parameters.poissons_ratio;
+      return parameters.youngs_modulus * (1. - nu) /
+             ((1. + nu) * (1. - 2. * nu));
+    }
+
     SymmetricTensor<2, 3>
     elastic_strain_for_stress(
       const SymmetricTensor<2, 3> &kirchhoff_stress) const override

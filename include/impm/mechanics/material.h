@@ -68,6 +68,17 @@ namespace impm
   spectral_decomposition(const SymmetricTensor<2, 3> &tensor);
 
   /**
+   * @brief The elastic energy per unit reference volume of an update,
+   * @f$\tfrac12\,\tau : \varepsilon_e@f$ with the elastic logarithmic
+   * strain @f$\varepsilon_e = \tfrac12 \ln b_e@f$: exact for the elastic
+   * laws linear in the logarithmic strain (Hencky, and the plastic models
+   * built on it), an estimate for pressure-dependent elasticity
+   * (Cam-clay).
+   */
+  double
+  elastic_energy_density(const ConstitutiveUpdate &update);
+
+  /**
    * @brief The spectral decomposition of the trial elastic left
    * Cauchy-Green tensor @f$b^e_{tr} = \Delta F\, b^e_n\, \Delta F^T@f$
    * into @p result's trial eigenvalues and eigenvectors (descending).
@@ -296,6 +307,15 @@ namespace impm
      */
     virtual double
     elastic_modulus() const = 0;
+
+    /**
+     * @brief The P-wave (constrained) modulus @f$\lambda + 2\mu@f$ of the
+     * elastic law, for the speed of sound @f$c_p = \sqrt{(\lambda +
+     * 2\mu)/\rho}@f$ that bounds an explicit time step. A
+     * pressure-dependent law gives that of its reference state.
+     */
+    virtual double
+    p_wave_modulus() const = 0;
   };
 
   /**
@@ -385,6 +405,12 @@ namespace impm
 
     double
     elastic_modulus() const override;
+
+    double
+    p_wave_modulus() const override
+    {
+      return lambda + 2. * mu;
+    }
 
   private:
     /**

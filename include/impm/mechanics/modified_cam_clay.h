@@ -224,6 +224,12 @@ namespace impm
     double
     elastic_modulus() const override;
 
+    /** @brief @f$K + 4\mu/3@f$ at the reference pressure (the bulk
+     *  modulus grows with the mean stress: an explicit step near the limit
+     *  at higher pressures needs a smaller Courant number). */
+    double
+    p_wave_modulus() const override;
+
     /**
      * @brief The return map in principal stresses from the trial
      * logarithmic strains @p trial_strain and @f$p_{c,n}@f$.

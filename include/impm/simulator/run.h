@@ -66,6 +66,7 @@ namespace impm
       if (time.time_step > 0.)
         solver.n_load_steps = static_cast<unsigned int>(
           std::ceil(time.end_time / time.time_step - 1e-9));
+      time.nominal_step = time.end_time / solver.n_load_steps;
     }
   };
 

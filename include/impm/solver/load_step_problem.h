@@ -76,6 +76,25 @@ namespace impm
     void
     set_start_residual(const double start_load_factor);
 
+    /** @brief Whether a coupling finds each step's increment itself
+     *  (explicit time integration: Couplings::step_solver()). */
+    bool
+    is_explicit() const
+    {
+      return couplings.step_solver() != nullptr;
+    }
+
+    /**
+     * @brief An explicit step, after begin(): the increment from the
+     * coupling that finds it, the stresses and forces it gives. No matrix,
+     * no Newton iteration: the record has one residual, that of the free
+     * DoFs before the inertial force (the inertial force of the step's
+     * end is that residual, so the reactions balance by construction).
+     * Collective.
+     */
+    NewtonRecord
+    explicit_step();
+
     Residual
     evaluate_residual() override;
 
@@ -131,10 +150,14 @@ namespace impm
     {
       return grid.compute_reactions(internal_force,
                                     external_force,
-                                    couplings.force_from_material());
+                                    couplings.force_from_material() +
+                                      explicit_inertial_force);
     }
 
   private:
+    /** The inertial force of the last explicit step (zero otherwise). */
+    Tensor<1, dim> explicit_inertial_force;
+
     const BackgroundGrid<dim> &grid;
     LoadStepSystem<dim>       &system;
     Assembler<dim>            &assembler;

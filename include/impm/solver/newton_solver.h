@@ -29,18 +29,21 @@ namespace impm
     linear_solve_failed,
     /** Converged, but a point moved more than 'Solver/Maximum point
      *  increment' cells (set by the load-step control, not by Newton). */
-    increment_too_large
+    increment_too_large,
+    /** An explicit time step above the stable one (no Newton solve). */
+    above_stable_step
   };
 
   /** @brief The words for each NewtonOutcome, as the log and errors print. */
-  constexpr std::array<const char *, 7> newton_outcome_names = {
+  constexpr std::array<const char *, 8> newton_outcome_names = {
     {"converged",
      "iteration limit",
      "diverged",
      "non-finite residual",
      "inverted point",
      "linear solve failed",
-     "point increment too large"}};
+     "point increment too large",
+     "time step above the stable one"}};
 
   /** @brief The name of @p outcome. */
   inline std::string

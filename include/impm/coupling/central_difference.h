@@ -1,0 +1,64 @@
+#ifndef impm_coupling_central_difference_h
+#define impm_coupling_central_difference_h
+
+#include <deal.II/base/mpi.h>
+
+#include <impm/basis/basis_functions.h>
+#include <impm/coupling/nodal_momentum.h>
+#include <impm/coupling/time_integrator.h>
+#include <impm/points/material_points.h>
+#include <impm/points/point_step.h>
+
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /** @brief The smallest cell size of @p grid. */
+  template <int dim>
+  double
+  smallest_cell_size(const CartesianGrid<dim> &grid);
+
+  /**
+   * @brief The stable time step of the explicit central difference rule
+   * for the points' current state: @p courant_number times the smallest
+   * cell size over the largest speed of sound of the points, @f$c_p =
+   * \sqrt{M/\rho}@f$ with their material's P-wave modulus
+   * (Material::p_wave_modulus()) and current density. Collective.
+   */
+  template <int dim>
+  double
+  stable_time_step(const MaterialPoints<dim> &material_points,
+                   const PointSteps<dim>     &steps,
+                   const CartesianGrid<dim>  &grid,
+                   const double               courant_number,
+                   const MPI_Comm             communicator);
+
+  /**
+   * @brief One step of the central difference rule with the lumped mass
+   * of @p nodes, from the residual of the step's start @p r (internal
+   * minus external force, ghosted): the nodes' acceleration @f$a_I =
+   * (-r_I - \alpha_R M_I v_I)/M_I@f$ (mass damping @p mass_damping), their
+   * new velocity @f$v_I + \Delta t\, a_I@f$, the points' new velocity and
+   * acceleration (NodalMomentum::update_points() with @p flip_fraction)
+   * and the increment @f$\Delta t\,v_I@f$ with the nodes' new velocity
+   * (USL) or that of the updated points' momentum (MUSL), on the local
+   * DoFs of the system (zero elsewhere). Collective.
+   */
+  template <int dim>
+  void
+  central_difference_step(const NodalMomentum<dim>  &nodes,
+                          const NodalVector         &r,
+                          const double               time_step,
+                          const double               mass_damping,
+                          const ExplicitOrder        order,
+                          const double               flip_fraction,
+                          const MaterialPoints<dim> &material_points,
+                          const PointSteps<dim>     &steps,
+                          std::vector<double>       &increment,
+                          std::vector<double>       &velocities,
+                          std::vector<double>       &accelerations);
+} // namespace impm
+
+#endif

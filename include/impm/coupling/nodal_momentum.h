@@ -1,0 +1,123 @@
+#ifndef impm_coupling_nodal_momentum_h
+#define impm_coupling_nodal_momentum_h
+
+#include <impm/grid/background_grid.h>
+#include <impm/points/material_points.h>
+#include <impm/points/point_step.h>
+#include <impm/system/load_step_system.h>
+
+#include <vector>
+
+namespace impm
+{
+  using namespace dealii;
+
+  /**
+   * @brief The transfer of mass and momentum between the material points
+   * and the nodes of a step's grid, for the time integrators (Inertia).
+   *
+   * map_points() sums the points' mass, momentum and mass times
+   * acceleration at the nodes with the step's weights @f$N_{Ip}@f$ (a
+   * lumped mass: @f$M_I = \sum_p N_{Ip} m_p@f$, @f$p_I = \sum_p N_{Ip} m_p
+   * v_p@f$, @f$q_I = \sum_p N_{Ip} m_p a_p@f$), with the momentum and
+   * acceleration zero on the DoFs outside the system (constrained: their
+   * motion is prescribed). update_points() takes the nodes' new state
+   * back to the points, remapped_velocity() maps the points' updated
+   * momentum to the nodes again (the modified update, MUSL).
+   *
+   * The points' velocity and acceleration are the declared point fields
+   * `velocity` and `acceleration` of the couplings (PointLayout).
+   *
+   * @tparam dim Space dimension.
+   */
+  template <int dim>
+  class NodalMomentum
+  {
+  public:
+    /** @brief Transfers on @p grid. */
+    explicit NodalMomentum(const BackgroundGrid<dim> &grid);
+
+    /** @brief Map the points' mass, momentum and mass times acceleration
+     *  to the nodes of this step (owned and ghost DoFs). Collective. */
+    void
+    map_points(const MaterialPoints<dim> &material_points,
+               const LoadStepSystem<dim> &system);
+
+    /** @brief Number of local DoFs (owned, then ghosts). */
+    unsigned int
+    n_local() const
+    {
+      return in_system_dof.size();
+    }
+
+    /** @brief The lumped mass of local DoF @p i. */
+    double
+    mass(const unsigned int i) const
+    {
+      return nodal_mass.local_element(i);
+    }
+
+    /** @brief The momentum of local DoF @p i (zero outside the system). */
+    double
+    momentum(const unsigned int i) const
+    {
+      return nodal_momentum.local_element(i);
+    }
+
+    /** @brief The mass times acceleration of local DoF @p i. */
+    double
+    mass_acceleration(const unsigned int i) const
+    {
+      return nodal_mass_acceleration.local_element(i);
+    }
+
+    /** @brief Set the mass times acceleration of local DoF @p i. */
+    void
+    set_mass_acceleration(const unsigned int i, const double value)
+    {
+      nodal_mass_acceleration.local_element(i) = value;
+    }
+
+    /** @brief Whether local DoF @p i is an unknown of the system. */
+    bool
+    in_system(const unsigned int i) const
+    {
+      return in_system_dof[i];
+    }
+
+    /**
+     * @brief The points' new velocity and acceleration from the nodes'
+     * (local DoFs): @f$v_p = \phi\,(v_p + \sum_I N_{Ip}\,\Delta v_I) + (1 -
+     * \phi) \sum_I N_{Ip}\, v_I^{n+1}@f$ (FLIP fraction @f$\phi@f$),
+     * @f$a_p = \sum_I N_{Ip}\, a_I@f$.
+     * @param[out] velocities, accelerations By step index and axis.
+     */
+    void
+    update_points(const MaterialPoints<dim> &material_points,
+                  const PointSteps<dim>     &steps,
+                  const double               flip_fraction,
+                  const std::vector<double> &velocity_change,
+                  const std::vector<double> &new_velocity,
+                  const std::vector<double> &new_acceleration,
+                  std::vector<double>       &velocities,
+                  std::vector<double>       &accelerations) const;
+
+    /**
+     * @brief The nodes' velocity of the points' momentum with the
+     * velocities @p velocities (by step index and axis), over the mass of
+     * map_points(), on the local DoFs of the system (zero elsewhere).
+     * Collective.
+     */
+    std::vector<double>
+    remapped_velocity(const MaterialPoints<dim> &material_points,
+                      const PointSteps<dim>     &steps,
+                      const std::vector<double> &velocities) const;
+
+  private:
+    const BackgroundGrid<dim> &grid;
+    NodalVector       nodal_mass, nodal_momentum, nodal_mass_acceleration;
+    std::vector<bool> in_system_dof;
+  };
+} // namespace impm
+
+#endif

@@ -1,0 +1,132 @@
+#include <impm/core/point_properties.h>
+#include <impm/coupling/central_difference.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace impm
+{
+  template <int dim>
+  double
+  smallest_cell_size(const CartesianGrid<dim> &grid)
+  {
+    double h = grid.cell_size[0];
+    for (unsigned int d = 1; d < dim; ++d)
+      h = std::min(h, grid.cell_size[d]);
+    return h;
+  }
+
+
+
+  template <int dim>
+  double
+  stable_time_step(const MaterialPoints<dim> &material_points,
+                   const PointSteps<dim>     &steps,
+                   const CartesianGrid<dim>  &grid,
+                   const double               courant_number,
+                   const MPI_Comm             communicator)
+  {
+    double largest = 0.;
+    for (const auto &point : material_points.particles())
+      {
+        const PointState<dim> state(point.get_properties());
+        const double          density = state.mass() / state.volume();
+        largest =
+          std::max(largest,
+                   steps.of(point).material->p_wave_modulus() / density);
+      }
+    const double speed = std::sqrt(Utilities::MPI::max(largest, communicator));
+    return speed > 0. ? courant_number * smallest_cell_size(grid) / speed :
+                        std::numeric_limits<double>::max();
+  }
+
+
+
+  template <int dim>
+  void
+  central_difference_step(const NodalMomentum<dim>  &nodes,
+                          const NodalVector         &r,
+                          const double               time_step,
+                          const double               mass_damping,
+                          const ExplicitOrder        order,
+                          const double               flip_fraction,
+                          const MaterialPoints<dim> &material_points,
+                          const PointSteps<dim>     &steps,
+                          std::vector<double>       &increment,
+                          std::vector<double>       &velocities,
+                          std::vector<double>       &accelerations)
+  {
+    const unsigned int  n_local = nodes.n_local();
+    std::vector<double> acceleration(n_local), velocity_change(n_local),
+      new_velocity(n_local);
+    for (unsigned int i = 0; i < n_local; ++i)
+      {
+        const double m = nodes.mass(i);
+        if (!nodes.in_system(i) || !(m > 0.))
+          continue;
+        const double v     = nodes.momentum(i) / m;
+        acceleration[i]    = (-r.local_element(i) - mass_damping * m * v) / m;
+        velocity_change[i] = time_step * acceleration[i];
+        new_velocity[i]    = v + velocity_change[i];
+      }
+    nodes.update_points(material_points,
+                        steps,
+                        flip_fraction,
+                        velocity_change,
+                        new_velocity,
+                        acceleration,
+                        velocities,
+                        accelerations);
+    const std::vector<double> velocity =
+      order == ExplicitOrder::usl ?
+        new_velocity :
+        nodes.remapped_velocity(material_points, steps, velocities);
+    increment.assign(n_local, 0.);
+    for (unsigned int i = 0; i < n_local; ++i)
+      increment[i] = time_step * velocity[i];
+  }
+
+
+
+  template double
+  smallest_cell_size(const CartesianGrid<2> &);
+  template double
+  smallest_cell_size(const CartesianGrid<3> &);
+  template double
+  stable_time_step(const MaterialPoints<2> &,
+                   const PointSteps<2> &,
+                   const CartesianGrid<2> &,
+                   const double,
+                   const MPI_Comm);
+  template double
+  stable_time_step(const MaterialPoints<3> &,
+                   const PointSteps<3> &,
+                   const CartesianGrid<3> &,
+                   const double,
+                   const MPI_Comm);
+  template void
+  central_difference_step(const NodalMomentum<2> &,
+                          const NodalVector &,
+                          const double,
+                          const double,
+                          const ExplicitOrder,
+                          const double,
+                          const MaterialPoints<2> &,
+                          const PointSteps<2> &,
+                          std::vector<double> &,
+                          std::vector<double> &,
+                          std::vector<double> &);
+  template void
+  central_difference_step(const NodalMomentum<3> &,
+                          const NodalVector &,
+                          const double,
+                          const double,
+                          const ExplicitOrder,
+                          const double,
+                          const MaterialPoints<3> &,
+                          const PointSteps<3> &,
+                          std::vector<double> &,
+                          std::vector<double> &,
+                          std::vector<double> &);
+} // namespace impm

@@ -1,0 +1,135 @@
+#include <impm/base/errors.h>
+#include <impm/coupling/time_integrator.h>
+
+#include <sstream>
+
+namespace impm
+{
+  void
+  TimeIntegrator::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Integrator",
+                      "Newmark",
+                      Patterns::Selection("Newmark|generalised-alpha|"
+                                          "explicit MUSL|explicit USL"),
+                      "The time integrator: 'Newmark' (with 'Newmark "
+                      "beta' and 'Newmark gamma'; the trapezoidal rule "
+                      "by default) or 'generalised-alpha' (Chung and "
+                      "Hulbert, with 'Spectral radius'), both implicit "
+                      "in full Newton; or the explicit central "
+                      "difference rule with lumped mass, 'explicit "
+                      "MUSL' (the increment from the updated points' "
+                      "momentum) or 'explicit USL' (from the nodes' "
+                      "velocity), with its time step below 'Courant "
+                      "number' times the stable one.");
+    prm.declare_entry("Courant number",
+                      "0.5",
+                      Patterns::Double(0., 1.),
+                      "Explicit integrators: the largest time step as a "
+                      "fraction of the smallest cell size over the "
+                      "largest speed of sound (above 0, at most 1).");
+    prm.declare_entry("FLIP fraction",
+                      "1",
+                      Patterns::Double(0., 1.),
+                      "The points' new velocity: this fraction from "
+                      "their velocity plus the nodes' change (FLIP), "
+                      "the rest the nodes' new velocity (PIC, which "
+                      "damps). 1: FLIP.");
+    prm.declare_entry("Newmark beta",
+                      "0.25",
+                      Patterns::Double(0., 0.5),
+                      "beta of the Newmark rule (0.25 with gamma = 0.5: "
+                      "the trapezoidal rule, unconditionally stable and "
+                      "without numerical damping); from above 0 to "
+                      "0.5.");
+    prm.declare_entry("Newmark gamma",
+                      "0.5",
+                      Patterns::Double(0., 1.),
+                      "gamma of the Newmark rule (0.5: no numerical "
+                      "damping; above 0.5 damps); from 0.5 to 1, and "
+                      "at most 4 beta for unconditional stability.");
+    prm.declare_entry("Spectral radius",
+                      "0.8",
+                      Patterns::Double(0., 1.),
+                      "generalised-alpha's spectral radius at infinite "
+                      "frequency, from 0 (the most damping of the "
+                      "highest frequencies) to 1 (none: the "
+                      "trapezoidal rule's energy conservation).");
+    prm.declare_entry("Mass damping",
+                      "0",
+                      Patterns::Double(0.),
+                      "The mass-proportional Rayleigh damping "
+                      "coefficient alpha in 1/s (damping force alpha M "
+                      "v; a mode of angular frequency omega is damped "
+                      "at the ratio alpha / (2 omega)). 0: none.");
+  }
+
+
+
+  TimeIntegrator::TimeIntegrator(const ParameterHandler &prm)
+  {
+    const std::string name = prm.get("Integrator");
+    explicit_order         = name == "explicit MUSL" ? ExplicitOrder::musl :
+                             name == "explicit USL"  ? ExplicitOrder::usl :
+                                                       ExplicitOrder::none;
+    courant_number         = prm.get_double("Courant number");
+    flip_fraction          = prm.get_double("FLIP fraction");
+    generalised_alpha      = name == "generalised-alpha";
+    spectral_radius        = prm.get_double("Spectral radius");
+    mass_damping           = prm.get_double("Mass damping");
+    if (generalised_alpha)
+      {
+        alpha_m = (2. * spectral_radius - 1.) / (spectral_radius + 1.);
+        alpha_f = spectral_radius / (spectral_radius + 1.);
+        gamma   = 0.5 - alpha_m + alpha_f;
+        beta    = 0.25 * (1. - alpha_m + alpha_f) * (1. - alpha_m + alpha_f);
+      }
+    else
+      {
+        alpha_m = alpha_f = 0.;
+        beta              = prm.get_double("Newmark beta");
+        gamma             = prm.get_double("Newmark gamma");
+      }
+    if (!(courant_number > 0.))
+      throw InputError(
+        "Parameter 'Inertia/Courant number' = " + prm.get("Courant number") +
+        " is not allowed: it must be above 0.");
+    if (is_explicit())
+      return;
+    if (!(beta > 0.))
+      throw InputError("Parameter 'Inertia/Newmark beta' = '" +
+                       prm.get("Newmark beta") +
+                       "' is not allowed: it must be > 0 (an implicit "
+                       "rule).");
+    if (gamma < 0.5 || 4. * beta < gamma)
+      throw InputError("Inertia: Newmark gamma = " + prm.get("Newmark gamma") +
+                       " with beta = " + prm.get("Newmark beta") +
+                       " is not unconditionally stable: it needs 0.5 <= "
+                       "gamma <= 4 beta.");
+  }
+
+
+
+  std::string
+  TimeIntegrator::description() const
+  {
+    std::ostringstream out;
+    if (is_explicit())
+      out << "explicit central differences ("
+          << (explicit_order == ExplicitOrder::musl ? "MUSL" : "USL")
+          << ", Courant number " << courant_number << ")";
+    else if (generalised_alpha)
+      out << "generalised-alpha (spectral radius " << spectral_radius
+          << ": alpha_m " << alpha_m << ", alpha_f " << alpha_f << ")";
+    else
+      out << "Newmark (beta " << beta << ", gamma " << gamma
+          << (beta == 0.25 && gamma == 0.5 ? ", the trapezoidal rule" : "")
+          << ")";
+    out << ", lumped mass";
+    if (mass_damping > 0.)
+      out << ", mass damping " << mass_damping << " 1/s";
+    if (flip_fraction < 1.)
+      out << ", FLIP fraction " << flip_fraction;
+    return out.str();
+  }
+} // namespace impm
