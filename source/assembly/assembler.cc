@@ -29,6 +29,26 @@ namespace impm
 
 
   template <int dim>
+  void
+  Assembler<dim>::set_start_stresses()
+  {
+    for (const auto &point : material_points.particles())
+      {
+        PointStep<dim>       &step = system.point_steps.of(point);
+        const PointState<dim> state(point.get_properties());
+        step.deformation_increment         = unit_symmetric_tensor<dim>();
+        step.deformation_increment_inverse = unit_symmetric_tensor<dim>();
+        step.update.kirchhoff_stress       = state.kirchhoff_stress();
+        step.update.elastic_left_cauchy_green =
+          state.elastic_left_cauchy_green();
+        step.update.plastic            = false;
+        step.update.plastic_multiplier = 0.;
+      }
+  }
+
+
+
+  template <int dim>
   bool
   Assembler<dim>::update_stresses(const NodalVector &increment)
   {

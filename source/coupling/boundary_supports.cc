@@ -288,6 +288,18 @@ namespace impm
             {"absorbed_energy", "Ea", absorbed_energy, MeasureKind::energy});
       }
 
+      /** @brief Dashpots act on the step's mean velocity, the increment
+       *  over the time step, which an explicit step does not solve for. */
+      std::string
+      explicit_step_conflict() const override
+      {
+        if (!has_dashpots())
+          return "";
+        return "Absorbing boundary: its dashpots act on the step's mean "
+               "velocity, which an explicit step does not solve for; use an "
+               "implicit integrator (Newmark or generalised-alpha).";
+      }
+
     protected:
       /** @brief Whether the supports have dashpots. */
       bool

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <impm/base/errors.h>
 #include <impm/coupling/coupling.h>
 
 #include <stdexcept>
@@ -121,6 +122,15 @@ namespace impm
   template <int dim>
   std::string
   Coupling<dim>::step_increment(const LoadStepSystem<dim> &, NodalVector &)
+  {
+    return "";
+  }
+
+
+
+  template <int dim>
+  std::string
+  Coupling<dim>::explicit_step_conflict() const
   {
     return "";
   }
@@ -364,6 +374,11 @@ namespace impm
           }
         couplings.push_back(std::move(coupling));
       }
+    if (step_solver() != nullptr)
+      for (const auto &coupling : couplings)
+        if (const std::string conflict = coupling->explicit_step_conflict();
+            !conflict.empty())
+          throw InputError(conflict);
   }
 
 
@@ -405,7 +420,8 @@ namespace impm
     unsigned int n_coupling_rows = 0;
     for (const unsigned int n : n_rows)
       n_coupling_rows += n;
-    system.number(touched, n_coupling_rows);
+    // An explicit step has no matrix: no assembly groups either.
+    system.number(touched, n_coupling_rows, step_solver() == nullptr);
     std::vector<std::vector<types::global_dof_index>> blocks;
     types::global_dof_index first = system.first_coupling_row();
     for (unsigned int c = 0; c < couplings.size(); ++c)

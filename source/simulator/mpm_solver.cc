@@ -378,7 +378,8 @@ namespace impm
     // A kept matrix has the rows of the step before, and so its rigid-body
     // modes: the linear solver may keep what it built for it (an AMG
     // hierarchy, under its reuse rule).
-    if (linear_solver->needs_near_null_space() && !same_system)
+    if (linear_solver->needs_near_null_space() && !same_system &&
+        !problem.is_explicit())
       linear_solver->set_near_null_space(system.rigid_body_modes());
   }
 

@@ -95,7 +95,8 @@ namespace impm
   template <int dim>
   void
   LoadStepSystem<dim>::number(const std::vector<bool>      &touched,
-                              const types::global_dof_index n_coupling_rows)
+                              const types::global_dof_index n_coupling_rows,
+                              const bool                    with_groups)
   {
     // Owned DoFs in the system: touched and not constrained, numbered
     // contiguously per process.
@@ -143,8 +144,10 @@ namespace impm
     owned.clear();
     owned.set_size(n_system);
     owned.add_range(first_row, first_row + n_local_system);
-    assembly_groups =
-      make_assembly_groups(point_steps, index_in_system, grid.cartesian());
+    assembly_groups.clear();
+    if (with_groups)
+      assembly_groups =
+        make_assembly_groups(point_steps, index_in_system, grid.cartesian());
   }
 
 

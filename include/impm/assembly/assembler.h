@@ -72,6 +72,16 @@ namespace impm
     update_stresses(const NodalVector &increment);
 
     /**
+     * @brief The stresses of the zero increment without a return map: each
+     * point's step holds its start-of-step Kirchhoff stress and b^e, with
+     * the unit deformation increment (what update_stresses() of a zero
+     * increment gives, at a fraction of its cost: the residual of a step's
+     * start). The tangent of this state is not set.
+     */
+    void
+    set_start_stresses();
+
+    /**
      * @brief The external force of the force effects at @p load_factor,
      * spread to the nodes with the points' weights (compressed).
      * Collective.

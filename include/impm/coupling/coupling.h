@@ -212,9 +212,10 @@ namespace impm
     /**
      * @brief The residual of the step's start, after begin_attempt(): the
      * material's internal force of the start-of-step stresses on this
-     * step's grid minus the external force at the step's start load
-     * factor, on every DoF (owned, with the ghosts updated). The other
-     * couplings' forces are not in it.
+     * step's grid, with the forces of the couplings that do not ask for it
+     * at the zero increment (contact, springs, a base's shaking), minus
+     * the external force at the step's start load factor, on every DoF
+     * (owned, with the ghosts updated).
      */
     virtual void
     set_start_residual(const NodalVector &internal_minus_external);
@@ -238,6 +239,14 @@ namespace impm
      */
     virtual std::string
     step_increment(const LoadStepSystem<dim> &system, NodalVector &increment);
+
+    /**
+     * @brief Why this coupling cannot be part of a scene whose steps are
+     * explicit (Couplings::step_solver()), in one line; empty (the default)
+     * if it can. Asked once, when the couplings are made.
+     */
+    virtual std::string
+    explicit_step_conflict() const;
 
     /**
      * @brief Whether this coupling sets the points' volume change: then the

@@ -69,7 +69,8 @@ namespace impm
 
     /**
      * @brief The residual of the step's start (the zero increment's
-     * internal force minus the external force of load factor
+     * internal force, with the forces of the couplings that do not ask
+     * for it, minus the external force of load factor
      * @p start_load_factor) for the couplings that ask for it
      * (Coupling::needs_start_residual()); nothing when none does.
      */

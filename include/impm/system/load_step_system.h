@@ -80,12 +80,14 @@ namespace impm
     /**
      * @brief Number the system: the owned DoFs in @p touched that no face
      * condition holds, then @p n_coupling_rows rows of the couplings'
-     * unknowns (Coupling::prepare()), contiguously per process; and group
-     * the points by support. Collective.
+     * unknowns (Coupling::prepare()), contiguously per process; and, for
+     * a matrix (@p with_groups), group the points by support.
+     * Collective.
      */
     void
     number(const std::vector<bool>      &touched,
-           const types::global_dof_index n_coupling_rows);
+           const types::global_dof_index n_coupling_rows,
+           const bool                    with_groups = true);
 
     /** @brief The first row of this process's couplings' unknowns (after
      *  its nodal rows). */
