@@ -5,6 +5,9 @@ impm to its 'File'): the stress path p'-q, the compression curve e-ln p'
 ln p') and q against the axial strain (the shear stress against the shear
 strain for simple shear). Compression positive, as the file.
 
+Needs matplotlib (Debian: apt-get install python3-matplotlib, for
+/usr/bin/python3).
+
 Usage: python3 scripts/plot_material_test.py FILE.csv [FIGURE.png]
 (without FIGURE, FILE with .png in place of .csv).
 """
