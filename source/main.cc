@@ -9,6 +9,7 @@
 #include <impm/core/default_scene.h>
 #include <impm/core/parameters.h>
 #include <impm/io/scene_input.h>
+#include <impm/simulator/material_test.h>
 #include <impm/simulator/run.h>
 
 #include <csignal>
@@ -146,6 +147,14 @@ main(int argc, char **argv)
       if (!scene_file.empty())
         options.scene_file =
           std::filesystem::absolute(scene_file).lexically_normal().string();
+      // A material test drives one point of Body 1's material and runs no
+      // scene: the root process alone.
+      if (impm::MaterialTest::enabled(prm))
+        {
+          if (is_root)
+            impm::MaterialTest::run(prm, std::cout);
+          return 0;
+        }
       if (prm.get_integer("Dimension") == 2)
         impm::run_scene<2>(prm, options, MPI_COMM_WORLD);
       else

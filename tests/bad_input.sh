@@ -251,6 +251,18 @@ mkdir -p "$work/case_resume_other_layout" && (cd "$work/case_resume_other_layout
   fail "the run that writes the checkpoint failed"
 expect resume_other_layout "The checkpoint's material points store 3[0-9] properties; body 1: plastic_multiplier\\(1\\), this scene's 2[0-9] properties: resume with the scene" also_parallel -- "$base" --set "Body 1/Material/Model=Hencky elastic" --resume
 
+# The material test without a grid ('Material test'): wrong paths and
+# values, a file it cannot write.
+mt=(--set "Material test/Enabled=true")
+expect material_test_path "'Material test/Path' = 'triaxial' is not allowed: it must be one of 'drained triaxial compression'" - -- "$base" "${mt[@]}" --set "Material test/Path=triaxial"
+expect material_test_cyclic_path "'Material test/Cyclic path' = 'cyclic' is not allowed: it must be one of 'drained triaxial', 'undrained triaxial', 'oedometer', 'simple shear'" - -- "$base" "${mt[@]}" --set "Material test/Cyclic path=cyclic"
+expect material_test_cyclic_steps "Parameter 'Material test/Number of steps' = '10' is not allowed: a cyclic path needs a multiple of 4 steps per cycle." - -- "$base" "${mt[@]}" --set "Material test/Path=cyclic" --set "Material test/Number of steps=10"
+expect material_test_zero_strain "Parameter 'Material test/Strain' = '0' is not allowed: it must be > 0." - -- "$base" "${mt[@]}" --set "Material test/Strain=0"
+expect material_test_zero_k0 "Parameter 'Material test/K0' = '0' is not allowed: it must be > 0." - -- "$base" "${mt[@]}" --set "Material test/K0=0"
+expect material_test_measure "'Material test/Stress measure' = 'PK2' is not allowed: it must be one of 'Cauchy', 'Kirchhoff'" - -- "$base" "${mt[@]}" --set "Material test/Stress measure=PK2"
+mkdir -p "$work/case_material_test_file" && : > "$work/case_material_test_file/a_file"
+expect material_test_file "Material test: cannot write the file '$work/case_material_test_file/a_file/test.csv' \\('Material test/File'\\)." - -- "$base" "${mt[@]}" --set "Material test/File=$work/case_material_test_file/a_file/test.csv"
+
 # The output directory.
 mkdir -p "$work/case_directory_of_another_run/other" && printf 'scene = another\nscene file = /elsewhere/another.prm\n' > "$work/case_directory_of_another_run/other/impm-run.txt"
 with other_run.prm "s/set Output directory = results/set Output directory = other/"

@@ -27,6 +27,24 @@
 //    a region: 4 pi 1.3^2 = 21.23716634;
 // 6. box [0.5, 2.5] x [0.5, 3] x [1, 2.5] by the region [0, 4]^3: the whole
 //    surface 2 (2 x 2.5 + 2 x 1.5 + 2.5 x 1.5) = 23.5 (lattice faces).
+// 7. Cook's membrane scaled by 1/16, (0, 0), (3, 2.75), (3, 3.75), (0, 2.75),
+//    side x+: the edges whose outward normal has a positive x component,
+//    the right edge (length 1) and the lower, slanted edge (normal
+//    (2.75, -3)/sqrt(16.5625), length sqrt(16.5625) = 4.06970...). Clipped
+//    by the region in every direction: from y = 43/16 (the scene's y = 43)
+//    the right edge and the slanted edge's part above y = 43/16,
+//    L = 1 + 0.0625 sqrt(16.5625)/2.75 = 1.09249 (the side's 1 and 9.25 %
+//    more: the slanted edge's part above y = 43/16); side y- (the slanted
+//    edge alone) in the region 0.6 <= x <= 1.3, y <= 1, clipped in x at
+//    0.6 and in y at 1 (x = 12/11): (12/11 - 0.6) sqrt(16.5625)/3 =
+//    0.66586; between y = 3.1 and 3.45 (cuts off the lattice lines) the
+//    right edge's 0.35; side y- left of x = 1.3: 1.3 sqrt(16.5625)/3.
+//    Before the region clipped the pieces (cut at the lattice lines) a
+//    piece was in or out by its midpoint: 1, 0.5 sqrt(16.5625)/3, 0.5 and
+//    1.25 sqrt(16.5625)/3.
+//    A region must also hold the boundary points that carry the load (the
+//    lattice sites next to the side): x+ with a region from x = 2.95 holds
+//    none (they lie at x = 2.875) and is refused.
 // Before the loads were cut along the true boundary, the disc's side y+
 // carried the staircase of its lattice faces (its points' count times
 // 0.25 m), not pi R; before zones, the sphere's its lattice faces.
@@ -190,6 +208,35 @@ main(int argc, char **argv)
         {2.05, 2.05, 4., 4.});
   check(
     "turned square", diamond, "region", 6. * std::sqrt(2.), {0., 0., 4., 4.});
+
+  // Cook's membrane at 1/16 scale (case 7 above), side x+ clipped by
+  // regions.
+  Body<2> cook         = polygon;
+  cook.vertices        = {Point<2>(0., 0.),
+                          Point<2>(3., 2.75),
+                          Point<2>(3., 3.75),
+                          Point<2>(0., 2.75)};
+  const double slanted = std::sqrt(16.5625); // the lower edge's length
+  check("Cook's membrane, region from y = 43/16",
+        cook,
+        "x+",
+        1. + 0.0625 * slanted / 2.75,
+        {0., 43. / 16., 4., 4.});
+  check("Cook's membrane, y- side in the region 0.6 <= x <= 1.3, y <= 1",
+        cook,
+        "y-",
+        (12. / 11. - 0.6) * slanted / 3.,
+        {0.6, 0., 1.3, 1.});
+  check("Cook's membrane, region 3.1 <= y <= 3.45",
+        cook,
+        "x+",
+        0.35,
+        {0., 3.1, 4., 3.45});
+  check("Cook's membrane, y- side in the region x <= 1.3",
+        cook,
+        "y-",
+        1.3 * slanted / 3.,
+        {-1., -1., 1.3, 4.});
 
   Body<3> sphere;
   sphere.name                 = "Body 1";

@@ -11,6 +11,52 @@
 
 namespace impm
 {
+  namespace
+  {
+    /**
+     * The part of a 2D boundary piece inside the box [@p lower, @p upper]:
+     * the piece is taken as the straight segment through its midpoint
+     * along its tangent (normal turned by 90 degrees), size long (exact for
+     * a polygon's edges and a box's sides, the chord of a disc's arc), and
+     * clipped by the box in both directions (Liang and Barsky). Returns
+     * the length inside and the midpoint of that part.
+     */
+    std::pair<double, Point<2>>
+    clip_segment(const Point<2>     &midpoint,
+                 const double        length,
+                 const Tensor<1, 2> &normal,
+                 const Point<2>     &lower,
+                 const Point<2>     &upper)
+    {
+      Tensor<1, 2> tangent;
+      tangent[0]               = -normal[1];
+      tangent[1]               = normal[0];
+      const Point<2>     start = midpoint - 0.5 * length * tangent;
+      const Tensor<1, 2> along = length * tangent;
+      double             s0 = 0., s1 = 1.;
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          if (std::abs(along[d]) <= 1e-14 * length)
+            {
+              if (start[d] < lower[d] || start[d] > upper[d])
+                return {0., midpoint};
+              continue;
+            }
+          double a = (lower[d] - start[d]) / along[d];
+          double b = (upper[d] - start[d]) / along[d];
+          if (a > b)
+            std::swap(a, b);
+          s0 = std::max(s0, a);
+          s1 = std::min(s1, b);
+        }
+      if (!(s1 > s0))
+        return {0., midpoint};
+      return {(s1 - s0) * length, start + 0.5 * (s0 + s1) * along};
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   BoundarySelection<dim>::declare_parameters(ParameterHandler  &prm,
@@ -26,6 +72,9 @@ namespace impm
                       "The side of the body's boundary that is " + verb +
                         ", "
                         "by its outward normal: x-, x+, y-, y+ (, z-, z+); "
+                        "x+ is every part whose outward normal has a "
+                        "positive x component (n_x > 0: a polygon's slanted "
+                        "edges too, a disc's or sphere's half), and so on; "
                         "or 'region': every part of the boundary inside "
                         "the region, whatever its normal (slanted sides).");
     prm.declare_entry("Region lower corner",
@@ -34,7 +83,14 @@ namespace impm
                       "If given, only points initially inside this box "
                       "are " +
                         verb +
-                        " (empty: the whole side; required for "
+                        ", and only the boundary inside it: in 2D a side "
+                        "is clipped by the box in every direction (the "
+                        "length " +
+                        verb +
+                        " is the side's length inside it); with Boundary = "
+                        "region, and in 3D, a piece of the boundary (cut at "
+                        "the points' lattice lines) is in when its midpoint "
+                        "is (empty: the whole side; required for "
                         "Boundary = region).");
     prm.declare_entry("Region upper corner",
                       "",
@@ -177,9 +233,29 @@ namespace impm
         for (unsigned int f = 0; f < 2 * dim; ++f)
           if (faces & (1u << f))
             point_areas[point.first][f] += lattice_face[Names::face_axis(f)];
-    for (const auto &piece : pieces)
+    for (auto piece : pieces)
       {
-        if (!in_region(piece.midpoint))
+        // A side chosen with a region: in 2D the region clips each piece
+        // to its part inside, in every direction (exact for straight
+        // sides). Boundary = region, and 3D: a piece is in when its
+        // midpoint is (the region then picks slanted sides whose ends
+        // lie on other sides).
+        bool clipped = false;
+        if constexpr (dim == 2)
+          if (has_region && !by_region)
+            {
+              const auto [length, middle] = clip_segment(piece.midpoint,
+                                                         piece.size,
+                                                         piece.normal,
+                                                         region_lower,
+                                                         region_upper);
+              if (!(length > 0.))
+                continue;
+              piece.size     = length;
+              piece.midpoint = middle;
+              clipped        = true;
+            }
+        if (!clipped && !in_region(piece.midpoint))
           continue;
         const auto nearest = std::min_element(
           local.begin(), local.end(), [&](const auto &a, const auto &b) {

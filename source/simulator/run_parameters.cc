@@ -1,6 +1,7 @@
 // declare_run_parameters(): every module declares the entries it reads.
 #include <impm/coupling/coupling.h>
 #include <impm/postprocess/postprocessor.h>
+#include <impm/simulator/material_test.h>
 #include <impm/simulator/run.h>
 
 namespace impm
@@ -16,5 +17,6 @@ namespace impm
     Parameters::Time::declare_parameters(prm);
     Couplings<2>::declare_parameters(prm);
     PostprocessorManager<2>::declare_parameters(prm);
+    MaterialTest::Parameters::declare_parameters(prm);
   }
 } // namespace impm

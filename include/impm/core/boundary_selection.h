@@ -27,6 +27,16 @@ namespace impm
    * add up to the true length or area of that part. What a traction loads
    * and what springs support.
    *
+   * A side, "x+", is every part of the boundary whose outward normal has a
+   * positive x component (a polygon's slanted edges among them, a disc's
+   * or sphere's half); likewise x-, y-, y+, z-, z+. A region clips a side
+   * in every direction: in 2D each piece of it to its part inside the
+   * region, so that the length loaded is the side's length inside the
+   * region (Cook's membrane's x+ from y = 43: the right edge and the
+   * slanted lower edge above y = 43); with `Boundary = region`, and in 3D,
+   * a piece (the boundary cut at the points' lattice lines) is in when its
+   * midpoint is.
+   *
    * @tparam dim Space dimension.
    */
   template <int dim>

@@ -218,6 +218,16 @@ namespace impm
     description() const override;
 
     /**
+     * @brief The initial void ratio @f$e_0@f$: the void ratio of a point
+     * whose deformation gradient has determinant J is @f$(1 + e_0) J - 1@f$.
+     */
+    double
+    initial_void_ratio() const
+    {
+      return parameters.initial_void_ratio;
+    }
+
+    /**
      * @brief Young's modulus at the reference pressure, @f$9KG/(3K + G)@f$
      * with @f$K = p_{ref}/\kappa^*@f$: the stiffness that scales penalties.
      */
