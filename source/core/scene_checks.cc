@@ -66,6 +66,40 @@ namespace impm
       }
 
       /**
+       * Every body has mass (a density of 0 makes the weight, the mass
+       * matrix and the column's error 0 or NaN) and every rigid body
+       * overlaps the grid at the start (one outside it never touches the
+       * material).
+       */
+      template <int dim>
+      void
+      check_densities_and_rigid_bodies(const Parameters::All<dim> &parameters)
+      {
+        for (const auto &body : parameters.bodies)
+          if (!(body.density > 0.))
+            {
+              std::ostringstream value;
+              value << body.density;
+              throw InputError("'" + body.name + "/Density' = " + value.str() +
+                               ": a body needs a density above 0.");
+            }
+        const auto &grid = parameters.grid;
+        for (const auto &rigid_body : parameters.rigid_bodies)
+          {
+            const auto box = rigid_body.bounding_box(Tensor<1, dim>());
+            for (unsigned int d = 0; d < dim; ++d)
+              if (box.second[d] < grid.lower_corner[d] ||
+                  box.first[d] > grid.upper_corner[d])
+                throw InputError(
+                  rigid_body.name + " (" + box_string(box.first, box.second) +
+                  ") lies entirely outside the grid " +
+                  box_string(grid.lower_corner, grid.upper_corner) + " in " +
+                  Names::axis(d) +
+                  ": a rigid body must start within or on the grid.");
+          }
+      }
+
+      /**
        * Whether the region of face @p face holds a node of the face.
        */
       template <int dim>
@@ -255,6 +289,7 @@ namespace impm
           throw InputError(message.str());
         }
       check_bodies_inside(parameters);
+      check_densities_and_rigid_bodies(parameters);
       check_face_regions(parameters.grid);
     }
 

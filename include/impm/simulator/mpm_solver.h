@@ -108,8 +108,8 @@ namespace impm
                      const unsigned int     step_number,
                      const double           elapsed);
 
-    /** Whether to stop (and checkpoint) now: a SIGTERM or SIGUSR1 arrived
-     *  on any process, or the wall-time limit has passed; the reason. */
+    /** Whether to stop (and checkpoint) now: a SIGTERM, SIGINT or SIGUSR1
+     * arrived on any process, or the wall-time limit has passed; the reason. */
     std::string
     reason_to_stop(const double elapsed) const;
 
