@@ -4,8 +4,9 @@
 # step 1). Then:
 #  1. each file of checkpoint/ (the grid's p4est file and its data files
 #     with the points, state.txt, scene.prm, manifest.txt) is damaged in
-#     turn (truncated to half, zeroed, 8 bytes flipped; on two processes
-#     one of these per file, in turn), checkpoint.old/ removed, and --resume
+#     turn (truncated to half, zeroed, 8 bytes flipped: on one process all
+#     three for the grid's files, else one of these per file, in turn),
+#     checkpoint.old/ removed, and --resume
 #     must stop with a non-zero exit status (not a signal), one line
 #     "Error: ..." naming the file, and no abort or backtrace;
 #  2. with checkpoint.old/ kept, a damaged grid data file: the resumed run
@@ -49,7 +50,8 @@ refused() {
   [ "$(grep -c '^Error: ' out.txt)" -eq 1 ] || problem="$problem; not one line 'Error: '"
   grep -qE "^Error: --resume: the checkpoint is damaged: .*$2" out.txt ||
     problem="$problem; no error line naming $2"
-  grep -qiE "abort|backtrace|stacktrace|An error occurred in line|terminate called" out.txt &&
+  # (mpiexec's own note says "the job has been aborted", in lower case.)
+  grep -qE "Abort|MPI_ABORT|[Bb]acktrace|Stacktrace|An error occurred in line|terminate called" out.txt &&
     problem="$problem; an abort or a backtrace"
   [ ${#launcher[@]} -eq 0 ] && [ "$(wc -l < out.txt)" -ne 1 ] &&
     problem="$problem; more than one line of output"
@@ -79,7 +81,7 @@ echo "$files" | grep -q "_fixed.data$" || fail "the checkpoint has no grid data 
 modes=(truncate zero flip)
 n_cases=0
 for file in $files; do
-  if [ ${#launcher[@]} -eq 0 ]; then
+  if [ ${#launcher[@]} -eq 0 ] && [[ $file == grid* ]]; then
     chosen=("${modes[@]}")
   else
     chosen=("${modes[$((n_cases % 3))]}")
