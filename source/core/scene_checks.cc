@@ -67,9 +67,9 @@ namespace impm
 
       /**
        * Every body has mass (a density of 0 makes the weight, the mass
-       * matrix and the column's error 0 or NaN) and every rigid body
-       * overlaps the grid at the start (one outside it never touches the
-       * material).
+       * matrix and the column's error 0 or NaN) and every rigid body moved
+       * by a prescribed displacement reaches the grid at its start or its
+       * end (one that does not never touches the material).
        */
       template <int dim>
       void
@@ -86,16 +86,30 @@ namespace impm
         const auto &grid = parameters.grid;
         for (const auto &rigid_body : parameters.rigid_bodies)
           {
-            const auto box = rigid_body.bounding_box(Tensor<1, dim>());
+            // A force-driven body's path is not known in advance (checked
+            // when contact starts).
+            bool force_driven = false;
             for (unsigned int d = 0; d < dim; ++d)
-              if (box.second[d] < grid.lower_corner[d] ||
-                  box.first[d] > grid.upper_corner[d])
+              force_driven = force_driven || rigid_body.is_force_driven(d);
+            if (force_driven)
+              continue;
+            // The boxes at the start and at full displacement: a body that
+            // lies outside the grid in both never meets the material.
+            const auto start = rigid_body.bounding_box(Tensor<1, dim>());
+            const auto end =
+              rigid_body.bounding_box(rigid_body.displacement, 1.);
+            for (unsigned int d = 0; d < dim; ++d)
+              if (std::max(start.second[d], end.second[d]) <
+                    grid.lower_corner[d] ||
+                  std::min(start.first[d], end.first[d]) > grid.upper_corner[d])
                 throw InputError(
-                  rigid_body.name + " (" + box_string(box.first, box.second) +
-                  ") lies entirely outside the grid " +
+                  rigid_body.name + " (" +
+                  box_string(start.first, start.second) +
+                  ") lies outside the grid " +
                   box_string(grid.lower_corner, grid.upper_corner) + " in " +
                   Names::axis(d) +
-                  ": a rigid body must start within or on the grid.");
+                  " and its 'Displacement' does not bring it in: a rigid "
+                  "body must reach the grid to touch the material.");
           }
       }
 

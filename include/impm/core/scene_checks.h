@@ -15,7 +15,8 @@ namespace impm
    * an InputError naming the entries involved.
    *
    * Checked here: every body lies inside the grid and has a density above
-   * 0; every rigid body starts within or on the grid; every region of a face
+   * 0; every rigid body moved by a prescribed displacement reaches the grid
+   * at its start or its end; every region of a face
    * condition holds a node of its face; every displacement component is
    * held by some face condition near the material or a coupling (else the
    * system is singular: check_supports(), once the couplings exist); the memory
