@@ -6,14 +6,15 @@
 # Usage: sigint_stop.sh IMPM SCENE
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
-settings=(--set "Solver/Load steps=40")
+settings=(--set "Solver/Load steps=200")
 "$impm" "$scene" "${settings[@]}" > full.txt 2>&1 || fail "the uninterrupted run failed"
 summary full.txt > full_summary.txt
 rm -rf results
 "$impm" "$scene" "${settings[@]}" > part1.txt 2>&1 &
 pid=$!
+# steps.csv grows by a row per step (the printout may be buffered).
 for _ in $(seq 600); do
-  grep -q "^step   1 " part1.txt && break
+  [ -f results/steps.csv ] && [ "$(wc -l < results/steps.csv)" -gt 2 ] && break
   kill -0 $pid 2> /dev/null || break
   sleep 0.02
 done
