@@ -6,6 +6,7 @@
 #include <impm/io/checkpoint_manifest.h>
 #include <impm/io/scene_record.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -73,6 +74,20 @@ namespace impm
       return fs::exists(directory / CheckpointManifest::file_name);
     }
 
+    /** Write @p text to @p path; an error naming it if the write or the
+     *  close fails. */
+    void
+    write_checked(const std::string &path, const std::string &text)
+    {
+      errno = 0;
+      std::ofstream out(path);
+      out << text;
+      out.close();
+      if (!out)
+        throw std::runtime_error("Writing the checkpoint file " + path +
+                                 " failed" + system_reason() + ".");
+    }
+
     /** The content of @p path; a CollectiveError naming it if unreadable. */
     std::string
     read_text(const std::string &path, const std::string &what)
@@ -117,10 +132,12 @@ namespace impm
     run_collectively(communicator, [&]() {
       if (!root)
         return;
-      write_file_atomically((base / partial_name / state_name).string(),
-                            state.to_text());
-      write_file_atomically(
-        (base / partial_name / SceneRecord::file_name).string(), scene_text);
+      // Plain writes: the directory is not published yet, and the manifest
+      // syncs every file it names.
+      write_checked((base / partial_name / state_name).string(),
+                    state.to_text());
+      write_checked((base / partial_name / SceneRecord::file_name).string(),
+                    scene_text);
       // The manifest last: its presence marks the checkpoint complete.
       CheckpointManifest::write((base / partial_name).string());
       // The previous checkpoint is kept as checkpoint.old: a resume falls

@@ -332,7 +332,9 @@ namespace impm
                                    const double           elapsed)
   {
     TimerOutput::Scope scope(timer, "checkpoint");
-    RunState           state;
+    if (scene_text.empty())
+      scene_text = SceneRecord::to_text(prm);
+    RunState state;
     state.set("scene.name", parameters.scene.name);
     state.set("processes",
               static_cast<double>(
@@ -349,7 +351,7 @@ namespace impm
                     [this]() { material_points.prepare_for_checkpoint(); });
         },
         state,
-        SceneRecord::to_text(prm));
+        scene_text);
     pcout << "  checkpoint after load step " << step_number << std::endl;
   }
 
