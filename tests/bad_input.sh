@@ -258,6 +258,7 @@ expect resume_other_layout "The checkpoint's material points store 3[0-9] proper
 expect zero_density "'Body 1/Density' = 0: a body needs a density above 0\." also_parallel -- "$base" --set "Body 1/Density=0"
 expect column_solution_elsewhere "'Output/Analytical solution' = column describes a column under its own weight \(one box body, gravity along the last axis\), but no gravity acts along the last axis: set it to none" also_parallel -- "$base" --set "Output/Analytical solution=column" --set "Gravity/Enabled=false"
 expect rigid_body_outside_grid "Rigid body 1 \\(.*\\) lies outside the grid .* in x and its 'Displacement' does not bring it in: a rigid body must reach the grid" also_parallel -- "$base" --set "Number of rigid bodies=1" --set "Rigid body 1/Lower corner=1e6, 0" --set "Rigid body 1/Upper corner=1000001, 1"
+expect fixed_and_prescribed "The nodes on the edge of grid faces x- and y\\+ are both held \\('Grid/Condition x-' holds their y displacement at 0\\) and moved \\('Grid/Condition y\\+' prescribes it\\)" also_parallel -- "$base" --set "Grid/Condition x-=fixed" --set "Grid/Condition y+=prescribed" --set "Grid/Displacement y+=0, -0.1"
 # A UTF-8 byte-order mark at the start of a scene is skipped: the scene runs.
 if [ "$parallel" = 0 ]; then
   n_cases=$((n_cases + 1))

@@ -114,6 +114,39 @@ namespace impm
       }
 
       /**
+       * No node both held at zero and moved: two adjacent faces without
+       * regions share the nodes of their common edge, and one that holds a
+       * component at 0 (roller, fixed, normal only) contradicts one that
+       * prescribes a nonzero displacement of it.
+       */
+      template <int dim>
+      void
+      check_fixed_and_prescribed(const Parameters::Grid<dim> &grid)
+      {
+        for (unsigned int f = 0; f < 2 * dim; ++f)
+          for (unsigned int g = 0; g < 2 * dim; ++g)
+            if (f / 2 != g / 2 && !grid.face_has_region[f] &&
+                !grid.face_has_region[g] &&
+                !Parameters::is_prescribed(grid.face_conditions[f]) &&
+                Parameters::is_prescribed(grid.face_conditions[g]))
+              for (unsigned int c = 0; c < dim; ++c)
+                if (Parameters::constrains(grid.face_conditions[f], f, c) &&
+                    Parameters::constrains(grid.face_conditions[g], g, c) &&
+                    grid.face_displacements[g][c] != 0.)
+                  throw InputError(
+                    "The nodes on the edge of grid faces " + Names::face(f) +
+                    " and " + Names::face(g) + " are both held ('Grid/" +
+                    "Condition " + Names::face(f) + "' holds their " +
+                    Names::axis(c) +
+                    " displacement at 0) and moved ('Grid/Condition " +
+                    Names::face(g) +
+                    "' prescribes it): give one of the "
+                    "faces a 'Region' that leaves the edge out, or a "
+                    "condition that does not act on " +
+                    Names::axis(c) + ".");
+      }
+
+      /**
        * Whether the region of face @p face holds a node of the face.
        */
       template <int dim>
@@ -304,6 +337,7 @@ namespace impm
         }
       check_bodies_inside(parameters);
       check_densities_and_rigid_bodies(parameters);
+      check_fixed_and_prescribed(parameters.grid);
       check_face_regions(parameters.grid);
     }
 

@@ -16,7 +16,8 @@ namespace impm
    *
    * Checked here: every body lies inside the grid and has a density above
    * 0; every rigid body moved by a prescribed displacement reaches the grid
-   * at its start or its end; every region of a face
+   * at its start or its end; no grid node is both held at 0 and moved by
+   * the face conditions of two adjacent faces; every region of a face
    * condition holds a node of its face; every displacement component is
    * held by some face condition near the material or a coupling (else the
    * system is singular: check_supports(), once the couplings exist); the memory
