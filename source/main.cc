@@ -38,7 +38,13 @@ namespace
     "  --resume                        continue the run in the scene's\n"
     "                                  output directory from its newest\n"
     "                                  checkpoint (on any number of\n"
-    "                                  processes)\n"
+    "                                  processes); the scene must be the\n"
+    "                                  one the checkpoint was written from\n"
+    "                                  but for the entries doc/running.md\n"
+    "                                  lists (load steps, end time, Output,\n"
+    "                                  Checkpoint, Testing)\n"
+    "  --resume-with-changes           --resume, accepting any changed\n"
+    "                                  entry of the scene\n"
     "  --stop-after-step K             stop after K converged load steps\n"
     "                                  (no summary.json is written)\n"
     "  --verbose                       on an error, print deal.II's full\n"
@@ -106,6 +112,8 @@ main(int argc, char **argv)
             }
           else if (argument == "--resume")
             options.resume = true;
+          else if (argument == "--resume-with-changes")
+            options.resume = options.resume_with_changes = true;
           else if (argument == "--overwrite")
             overrides.push_back("Existing output=overwrite");
           else if (argument == "--print-parameters")

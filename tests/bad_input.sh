@@ -244,12 +244,36 @@ expect load_factor_infinite "Parameter 'Time/Load factor' = '1/t' is not allowed
 
 # Declared point state: a field no point stores; a checkpoint resumed into
 # points laid out otherwise (the plastic model's state, then an elastic
-# model without it).
+# model without it): refused as a changed scene, and with
+# --resume-with-changes by the points' layout.
 expect unknown_point_field "Output/Fields names 'plastic_multipler', which this scene's points do not store; its fields are displacement, .*, plastic_multiplier\\." - -- "$base" --set "Output/Interval=1" --set "Output/Fields=stress, plastic_multipler"
 mkdir -p "$work/case_resume_other_layout" && (cd "$work/case_resume_other_layout" &&
   "$impm" "$base" --set "Checkpoint/Interval=1" --stop-after-step 1 > first.txt 2>&1) ||
   fail "the run that writes the checkpoint failed"
-expect resume_other_layout "The checkpoint's material points store 3[0-9] properties; body 1: plastic_multiplier\\(1\\), this scene's 2[0-9] properties: resume with the scene" also_parallel -- "$base" --set "Body 1/Material/Model=Hencky elastic" --resume
+mkdir -p "$work/case_resume_changed_scene" &&
+  cp -a "$work/case_resume_other_layout/results" "$work/case_resume_changed_scene/" ||
+  fail "the checkpoint could not be copied"
+expect resume_changed_scene "--resume: the scene differs from the one the checkpoint was written from in 1 entry: 'Body 1/Material/Model' von Mises -> Hencky elastic" also_parallel -- "$base" --set "Body 1/Material/Model=Hencky elastic" --resume
+expect resume_other_layout "The checkpoint's material points store 3[0-9] properties; body 1: plastic_multiplier\\(1\\), this scene's 2[0-9] properties: resume with the scene" also_parallel -- "$base" --set "Body 1/Material/Model=Hencky elastic" --resume-with-changes
+
+# Contradictions in a scene.
+expect zero_density "'Body 1/Density' = 0: a body needs a density above 0\." also_parallel -- "$base" --set "Body 1/Density=0"
+expect column_solution_elsewhere "'Output/Analytical solution' = column describes a column under its own weight \(one box body, gravity along the last axis\), but no gravity acts along the last axis: set it to none" also_parallel -- "$base" --set "Output/Analytical solution=column" --set "Gravity/Enabled=false"
+expect rigid_body_outside_grid "Rigid body 1 \\(.*\\) lies outside the grid .* in x and its 'Displacement' does not bring it in: a rigid body must reach the grid" also_parallel -- "$base" --set "Number of rigid bodies=1" --set "Rigid body 1/Lower corner=1e6, 0" --set "Rigid body 1/Upper corner=1000001, 1"
+expect fixed_and_prescribed "The nodes on the edge of grid faces x- and y\\+ are both held \\('Grid/Condition x-' holds their y displacement at 0\\) and moved \\('Grid/Condition y\\+' prescribes it\\)" also_parallel -- "$base" --set "Grid/Condition x-=fixed" --set "Grid/Condition y+=prescribed" --set "Grid/Displacement y+=0, -0.1"
+# A UTF-8 byte-order mark at the start of a scene is skipped: the scene runs.
+if [ "$parallel" = 0 ]; then
+  n_cases=$((n_cases + 1))
+  { printf '\xef\xbb\xbf'; cat "$base"; } > "$work/bom.prm"
+  mkdir -p "$work/case_bom" && cd "$work/case_bom" || fail "no case directory"
+  timeout 60 "$impm" "$work/bom.prm" --stop-after-step 1 > out.txt 2>&1 &&
+    grep -q "^Stopped after load step 1" out.txt || {
+    echo "case byte_order_mark: the scene with a byte-order mark did not run"
+    sed 's/^/    | /' out.txt | head -12
+    n_failed=$((n_failed + 1))
+  }
+  cd "$work"
+fi
 
 # The material test without a grid ('Material test'): wrong paths and
 # values, a file it cannot write.

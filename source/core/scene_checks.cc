@@ -66,6 +66,87 @@ namespace impm
       }
 
       /**
+       * Every body has mass (a density of 0 makes the weight, the mass
+       * matrix and the column's error 0 or NaN) and every rigid body moved
+       * by a prescribed displacement reaches the grid at its start or its
+       * end (one that does not never touches the material).
+       */
+      template <int dim>
+      void
+      check_densities_and_rigid_bodies(const Parameters::All<dim> &parameters)
+      {
+        for (const auto &body : parameters.bodies)
+          if (!(body.density > 0.))
+            {
+              std::ostringstream value;
+              value << body.density;
+              throw InputError("'" + body.name + "/Density' = " + value.str() +
+                               ": a body needs a density above 0.");
+            }
+        const auto &grid = parameters.grid;
+        for (const auto &rigid_body : parameters.rigid_bodies)
+          {
+            // A force-driven body's path is not known in advance (checked
+            // when contact starts).
+            bool force_driven = false;
+            for (unsigned int d = 0; d < dim; ++d)
+              force_driven = force_driven || rigid_body.is_force_driven(d);
+            if (force_driven)
+              continue;
+            // The boxes at the start and at full displacement: a body that
+            // lies outside the grid in both never meets the material.
+            const auto start = rigid_body.bounding_box(Tensor<1, dim>());
+            const auto end =
+              rigid_body.bounding_box(rigid_body.displacement, 1.);
+            for (unsigned int d = 0; d < dim; ++d)
+              if (std::max(start.second[d], end.second[d]) <
+                    grid.lower_corner[d] ||
+                  std::min(start.first[d], end.first[d]) > grid.upper_corner[d])
+                throw InputError(
+                  rigid_body.name + " (" +
+                  box_string(start.first, start.second) +
+                  ") lies outside the grid " +
+                  box_string(grid.lower_corner, grid.upper_corner) + " in " +
+                  Names::axis(d) +
+                  " and its 'Displacement' does not bring it in: a rigid "
+                  "body must reach the grid to touch the material.");
+          }
+      }
+
+      /**
+       * No node both held at zero and moved: two adjacent faces without
+       * regions share the nodes of their common edge, and one that holds a
+       * component at 0 (roller, fixed, normal only) contradicts one that
+       * prescribes a nonzero displacement of it.
+       */
+      template <int dim>
+      void
+      check_fixed_and_prescribed(const Parameters::Grid<dim> &grid)
+      {
+        for (unsigned int f = 0; f < 2 * dim; ++f)
+          for (unsigned int g = 0; g < 2 * dim; ++g)
+            if (f / 2 != g / 2 && !grid.face_has_region[f] &&
+                !grid.face_has_region[g] &&
+                !Parameters::is_prescribed(grid.face_conditions[f]) &&
+                Parameters::is_prescribed(grid.face_conditions[g]))
+              for (unsigned int c = 0; c < dim; ++c)
+                if (Parameters::constrains(grid.face_conditions[f], f, c) &&
+                    Parameters::constrains(grid.face_conditions[g], g, c) &&
+                    grid.face_displacements[g][c] != 0.)
+                  throw InputError(
+                    "The nodes on the edge of grid faces " + Names::face(f) +
+                    " and " + Names::face(g) + " are both held ('Grid/" +
+                    "Condition " + Names::face(f) + "' holds their " +
+                    Names::axis(c) +
+                    " displacement at 0) and moved ('Grid/Condition " +
+                    Names::face(g) +
+                    "' prescribes it): give one of the "
+                    "faces a 'Region' that leaves the edge out, or a "
+                    "condition that does not act on " +
+                    Names::axis(c) + ".");
+      }
+
+      /**
        * Whether the region of face @p face holds a node of the face.
        */
       template <int dim>
@@ -255,6 +336,8 @@ namespace impm
           throw InputError(message.str());
         }
       check_bodies_inside(parameters);
+      check_densities_and_rigid_bodies(parameters);
+      check_fixed_and_prescribed(parameters.grid);
       check_face_regions(parameters.grid);
     }
 

@@ -1,8 +1,12 @@
 #include <impm/io/atomic_file.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
@@ -33,6 +37,8 @@ namespace impm
         {
           write(out);
           out.flush();
+          // Closing writes what the stream still holds: checked too.
+          out.close();
         }
       catch (...)
         {
@@ -43,6 +49,9 @@ namespace impm
       if (!out)
         failure = "Writing the file " + path + " failed" + system_reason() +
                   "; the previous version, if any, is kept.";
+      else if (!sync_file(temporary))
+        failure = "Writing the file " + path + " failed (fsync" +
+                  system_reason() + "); the previous version, if any, is kept.";
     }
     if (!failure.empty())
       {
@@ -54,6 +63,24 @@ namespace impm
 
 
 
+  bool
+  sync_file(const std::string &path, const bool directory)
+  {
+    errno = 0;
+    const int descriptor =
+      ::open(path.c_str(),
+             O_RDONLY | O_CLOEXEC | (directory ? O_DIRECTORY : 0));
+    if (descriptor < 0)
+      return false;
+    // A file system that cannot sync a directory says EINVAL: nothing to
+    // wait for there.
+    const bool synced = ::fsync(descriptor) == 0 || errno == EINVAL;
+    ::close(descriptor);
+    return synced;
+  }
+
+
+
   void
   rename_or_throw(const std::string &from, const std::string &to)
   {
@@ -61,6 +88,9 @@ namespace impm
     if (std::rename(from.c_str(), to.c_str()) != 0)
       throw std::runtime_error("Cannot rename " + from + " to " + to +
                                system_reason() + ".");
+    // The rename itself reaches the disk with its directory.
+    const std::string parent = std::filesystem::path(to).parent_path().string();
+    sync_file(parent.empty() ? "." : parent, true);
   }
 
 

@@ -3,9 +3,13 @@
 #include <impm/base/errors.h>
 #include <impm/io/atomic_file.h>
 #include <impm/io/checkpoint.h>
+#include <impm/io/checkpoint_manifest.h>
+#include <impm/io/scene_record.h>
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 namespace impm
@@ -26,7 +30,8 @@ namespace impm
                         "(checkpoint/) every this many converged load "
                         "steps, so that 'impm SCENE --resume' can continue "
                         "it (0: never; >= 0). A run also saves and stops on "
-                        "SIGTERM or SIGUSR1.");
+                        "SIGTERM, SIGINT (Ctrl-C; a second one stops at "
+                        "once) or SIGUSR1.");
       prm.declare_entry("Wall time limit",
                         "0",
                         Patterns::Double(0.),
@@ -57,13 +62,43 @@ namespace impm
     const std::string complete_name = "checkpoint";
     const std::string partial_name  = "checkpoint.tmp";
     const std::string previous_name = "checkpoint.old";
+    const std::string damaged_name  = "checkpoint.damaged";
     const std::string state_name    = "state.txt";
     const std::string grid_name     = "grid";
 
+    /** Whether @p directory holds a checkpoint (its manifest is written
+     *  last). */
     bool
     is_complete(const fs::path &directory)
     {
-      return fs::exists(directory / state_name);
+      return fs::exists(directory / CheckpointManifest::file_name);
+    }
+
+    /** Write @p text to @p path; an error naming it if the write or the
+     *  close fails. */
+    void
+    write_checked(const std::string &path, const std::string &text)
+    {
+      errno = 0;
+      std::ofstream out(path);
+      out << text;
+      out.close();
+      if (!out)
+        throw std::runtime_error("Writing the checkpoint file " + path +
+                                 " failed" + system_reason() + ".");
+    }
+
+    /** The content of @p path; a CollectiveError naming it if unreadable. */
+    std::string
+    read_text(const std::string &path, const std::string &what)
+    {
+      std::ifstream     in(path);
+      std::stringstream text;
+      text << in.rdbuf();
+      if (!in)
+        throw CollectiveError("Cannot read the checkpoint " + what + " " +
+                              path + ".");
+      return text.str();
     }
   } // namespace
 
@@ -79,7 +114,8 @@ namespace impm
 
   void
   Checkpoint::write(const std::function<void(const std::string &)> &save_grid,
-                    const RunState                                 &state) const
+                    const RunState                                 &state,
+                    const std::string &scene_text) const
   {
     const bool root =
       dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
@@ -96,30 +132,81 @@ namespace impm
     run_collectively(communicator, [&]() {
       if (!root)
         return;
-      // The state last: its presence marks the checkpoint complete.
-      write_file_atomically((base / partial_name / state_name).string(),
-                            state.to_text());
+      // Plain writes: the directory is not published yet, and the manifest
+      // syncs every file it names.
+      write_checked((base / partial_name / state_name).string(),
+                    state.to_text());
+      write_checked((base / partial_name / SceneRecord::file_name).string(),
+                    scene_text);
+      // The manifest last: its presence marks the checkpoint complete.
+      CheckpointManifest::write((base / partial_name).string());
+      // The previous checkpoint is kept as checkpoint.old: a resume falls
+      // back to it if the newest is found damaged.
       if (fs::exists(base / complete_name))
         {
           fs::remove_all(base / previous_name);
           fs::rename(base / complete_name, base / previous_name);
         }
       fs::rename(base / partial_name, base / complete_name);
-      fs::remove_all(base / previous_name);
+      sync_file(base.string(), true);
     });
   }
 
 
 
-  std::string
-  Checkpoint::newest() const
+  void
+  Checkpoint::select()
   {
-    const fs::path base(output_directory);
-    // A run killed between the two renames leaves only the previous one.
-    for (const auto &name : {complete_name, previous_name})
-      if (is_complete(base / name))
-        return (base / name).string();
-    return "";
+    std::string chosen, error;
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      try
+        {
+          const fs::path base(output_directory);
+          std::string    damage;
+          for (const auto &name : {complete_name, previous_name})
+            {
+              const fs::path directory = base / name;
+              std::string    reason;
+              if (is_complete(directory))
+                reason = CheckpointManifest::verify(directory.string());
+              else if (name == complete_name && fs::exists(directory))
+                reason = directory.string() + " has no " +
+                         CheckpointManifest::file_name;
+              else
+                continue;
+              if (reason.empty())
+                {
+                  chosen = directory.string();
+                  break;
+                }
+              damage +=
+                (damage.empty() ? "" : "; the previous one too: ") + reason;
+            }
+          if (chosen.empty() && damage.empty())
+            error = "--resume: the output directory '" + output_directory +
+                    "' holds no complete checkpoint (set 'Checkpoint/"
+                    "Interval' or 'Checkpoint/Wall time limit', or stop "
+                    "a run with SIGTERM, to write one).";
+          else if (chosen.empty())
+            error = "--resume: the checkpoint is damaged: " + damage +
+                    " (no complete checkpoint is left; start the run "
+                    "afresh with --overwrite).";
+          else if (!damage.empty())
+            {
+              std::cout << "Note: the newest checkpoint is damaged: " << damage
+                        << "; resuming from the previous one, " << chosen
+                        << " (the damaged one is kept as " << damaged_name
+                        << ")." << std::endl;
+              fs::remove_all(base / damaged_name);
+              fs::rename(base / complete_name, base / damaged_name);
+            }
+        }
+      catch (const std::exception &exception)
+        {
+          error = "--resume: " + std::string(exception.what());
+        }
+    throw_if_any_failed(error, communicator, false);
+    directory = dealii::Utilities::MPI::broadcast(communicator, chosen, 0);
   }
 
 
@@ -127,12 +214,8 @@ namespace impm
   std::string
   Checkpoint::grid_file() const
   {
-    const std::string directory = newest();
     if (directory.empty())
-      throw InputError("--resume: the output directory '" + output_directory +
-                       "' holds no complete checkpoint (set 'Checkpoint/"
-                       "Interval' or 'Checkpoint/Wall time limit', or stop "
-                       "a run with SIGTERM, to write one).");
+      throw std::logic_error("Checkpoint: no checkpoint selected.");
     return (fs::path(directory) / grid_name).string();
   }
 
@@ -142,12 +225,17 @@ namespace impm
   Checkpoint::read_state() const
   {
     const std::string path =
-      (fs::path(fs::path(grid_file()).parent_path()) / state_name).string();
-    std::ifstream     in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    if (!in)
-      throw CollectiveError("Cannot read the checkpoint state " + path + ".");
-    return RunState::from_text(text.str(), path);
+      (fs::path(grid_file()).parent_path() / state_name).string();
+    return RunState::from_text(read_text(path, "state"), path);
+  }
+
+
+
+  std::string
+  Checkpoint::read_scene() const
+  {
+    return read_text(
+      (fs::path(grid_file()).parent_path() / SceneRecord::file_name).string(),
+      "scene");
   }
 } // namespace impm

@@ -4,6 +4,13 @@
 #include <impm/io/atomic_file.h>
 #include <impm/io/output_directory.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -26,7 +33,91 @@ namespace impm
           file = line.substr(13);
       return {name, file};
     }
+
+    /** The descriptor of the lock file this process holds, or -1. */
+    int lock_descriptor = -1;
+
+    /**
+     * Take the lock on @p path's lock file for this process, recording in
+     * it who holds it; an InputError naming the holder if another process
+     * holds it. Kept until the process ends (the system releases it then,
+     * however the process ends).
+     */
+    void
+    take_lock(const std::string &path, const std::string &scene_name)
+    {
+      if (lock_descriptor >= 0)
+        return;
+      const std::string file =
+        (std::filesystem::path(path) / OutputDirectory::lock_file).string();
+      const int descriptor =
+        ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+      if (descriptor < 0)
+        throw InputError("Cannot open the lock file " + file + ": " +
+                         std::strerror(errno) + ".");
+      if (::flock(descriptor, LOCK_EX | LOCK_NB) != 0)
+        {
+          const int   error = errno;
+          std::string holder;
+          char        buffer[512];
+          const auto  n = ::pread(descriptor, buffer, sizeof(buffer) - 1, 0);
+          if (n > 0)
+            holder.assign(buffer, static_cast<std::size_t>(n));
+          ::close(descriptor);
+          if (error != EWOULDBLOCK)
+            throw InputError("Cannot lock " + file + ": " +
+                             std::strerror(error) + ".");
+          holder = collapse_white_space(holder);
+          throw InputError(
+            "The output directory '" + path + "' is in use by another run (" +
+            (holder.empty() ? std::string("just started") : holder) +
+            "): wait for it to end, or give this run another 'Output "
+            "directory'.");
+        }
+      char host[256] = "unknown host";
+      ::gethostname(host, sizeof(host) - 1);
+      host[sizeof(host) - 1] = '\0';
+      char              started[64];
+      const std::time_t now = std::time(nullptr);
+      std::strftime(started,
+                    sizeof(started),
+                    "%Y-%m-%d %H:%M:%S UTC",
+                    std::gmtime(&now));
+      const std::string record = "scene '" + scene_name + "', pid " +
+                                 std::to_string(::getpid()) + " on " + host +
+                                 ", started " + started + "\n";
+      if (::ftruncate(descriptor, 0) != 0 ||
+          ::pwrite(descriptor, record.data(), record.size(), 0) !=
+            static_cast<ssize_t>(record.size()))
+        {
+          ::close(descriptor);
+          throw InputError("Cannot write the lock file " + file + ": " +
+                           std::strerror(errno) + ".");
+        }
+      lock_descriptor = descriptor;
+    }
   } // namespace
+
+
+
+  void
+  OutputDirectory::lock(const std::string &path,
+                        const std::string &scene_name,
+                        const MPI_Comm     communicator)
+  {
+    std::string error;
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0 &&
+        std::filesystem::is_directory(path))
+      try
+        {
+          take_lock(path, scene_name);
+        }
+      catch (const std::exception &exception)
+        {
+          error = exception.what();
+        }
+    throw_if_any_failed(error, communicator, false);
+  }
 
 
 
@@ -106,11 +197,15 @@ namespace impm
                 "that run with --overwrite (or 'Existing output = "
                 "overwrite').");
           }
+        // No other run may write here from now on.
+        take_lock(path, scene_name);
         // Remove the files of an earlier run, its checkpoints (a later
         // --resume must not continue another run) and any leftover
         // temporary.
-        for (const char *checkpoint :
-             {"checkpoint", "checkpoint.tmp", "checkpoint.old"})
+        for (const char *checkpoint : {"checkpoint",
+                                       "checkpoint.tmp",
+                                       "checkpoint.old",
+                                       "checkpoint.damaged"})
           fs::remove_all(directory / checkpoint);
         for (const auto &file : fs::directory_iterator(directory))
           {

@@ -352,7 +352,12 @@ namespace impm
       text << in.rdbuf();
       if (in.bad())
         throw InputError("Cannot read the scene file '" + file_name + "'.");
-      parse_text(prm, text.str(), file_name);
+      // A UTF-8 byte-order mark (some editors on Windows write one) is
+      // not part of the scene.
+      std::string content = text.str();
+      if (content.rfind("\xEF\xBB\xBF", 0) == 0)
+        content.erase(0, 3);
+      parse_text(prm, content, file_name);
     }
 
 

@@ -1,3 +1,4 @@
+#include <impm/base/errors.h>
 #include <impm/postprocess/column_solution.h>
 
 #include <cmath>
@@ -103,6 +104,32 @@ namespace impm
                                          (weight * height));
                           });
     return Utilities::MPI::max(deviation, context.communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  ColumnSolution<dim>::check_scene(const Parameters::All<dim> &parameters)
+  {
+    const auto &bodies  = parameters.bodies;
+    bool        lateral = false;
+    for (unsigned int d = 0; d + 1 < dim; ++d)
+      lateral = lateral || parameters.gravity[d] != 0.;
+    std::string reason;
+    if (bodies.size() != 1)
+      reason = "the scene has " + std::to_string(bodies.size()) + " bodies";
+    else if (bodies[0].shape != Body<dim>::Shape::box)
+      reason = "Body 1 is not a box";
+    else if (!parameters.gravity_enabled || parameters.gravity[dim - 1] == 0.)
+      reason = "no gravity acts along the last axis";
+    else if (lateral)
+      reason = "gravity acts across the column";
+    if (!reason.empty())
+      throw InputError("'Output/Analytical solution' = column describes a "
+                       "column under its own weight (one box body, gravity "
+                       "along the last axis), but " +
+                       reason + ": set it to none for this scene.");
   }
 
 

@@ -85,7 +85,11 @@ namespace impm
       void
       resume(const RunContext<dim> &, const RunState &state) override
       {
-        output.load(state, "point files");
+        // A checkpoint of a run without point files ('Output/Interval' may
+        // change on a resume) holds no series: it starts now.
+        if (("\n" + state.to_text()).find("\npoint files.times = ") !=
+            std::string::npos)
+          output.load(state, "point files");
       }
 
       void

@@ -4,6 +4,8 @@
 #include <impm/core/scene_checks.h>
 #include <impm/io/checkpoint.h>
 #include <impm/io/output_directory.h>
+#include <impm/io/scene_record.h>
+#include <impm/postprocess/column_solution.h>
 #include <impm/simulator/mpm_solver.h>
 #include <impm/simulator/run.h>
 
@@ -20,13 +22,17 @@ namespace impm
 {
   namespace
   {
-    /** Set by SIGTERM or SIGUSR1: save and stop after the current step. */
+    /** Set by SIGTERM, SIGINT or SIGUSR1: save and stop after the current
+     *  step. */
     volatile std::sig_atomic_t stop_signal = 0;
 
     extern "C" void
     request_stop(int signal)
     {
       stop_signal = signal;
+      // A second Ctrl-C stops at once.
+      if (signal == SIGINT)
+        std::signal(SIGINT, SIG_DFL);
     }
 
     /** The sum of the effects' accelerations acting from the first step. */
@@ -147,6 +153,7 @@ namespace impm
   {
     stop_signal = 0;
     std::signal(SIGTERM, request_stop);
+    std::signal(SIGINT, request_stop);
     std::signal(SIGUSR1, request_stop);
     Timer wall_timer(communicator);
     wall_timer.start();
@@ -307,6 +314,8 @@ namespace impm
       return "SIGTERM";
     if (signal == SIGUSR1)
       return "SIGUSR1";
+    if (signal == SIGINT)
+      return "SIGINT";
     const double limit = settings.checkpoint.wall_time_limit;
     if (limit > 0. && Utilities::MPI::max(elapsed, communicator) > limit)
       return "'Checkpoint/Wall time limit' = " + std::to_string(limit) +
@@ -323,7 +332,9 @@ namespace impm
                                    const double           elapsed)
   {
     TimerOutput::Scope scope(timer, "checkpoint");
-    RunState           state;
+    if (scene_text.empty())
+      scene_text = SceneRecord::to_text(prm);
+    RunState state;
     state.set("scene.name", parameters.scene.name);
     state.set("processes",
               static_cast<double>(
@@ -339,7 +350,8 @@ namespace impm
           grid.save(file_name,
                     [this]() { material_points.prepare_for_checkpoint(); });
         },
-        state);
+        state,
+        scene_text);
     pcout << "  checkpoint after load step " << step_number << std::endl;
   }
 
@@ -492,6 +504,9 @@ namespace impm
     parameters.scene.file            = options.scene_file;
     parameters.scene.stop_after_step = options.stop_after_step;
     SceneChecks::check(parameters, communicator);
+    if (settings.output.analytical_solution ==
+        Parameters::AnalyticalSolution::column)
+      ColumnSolution<dim>::check_scene(parameters);
     if (!options.resume)
       {
         MPMSolver<dim> solver(settings,
@@ -501,8 +516,12 @@ namespace impm
         solver.run();
         return;
       }
-    const Checkpoint  checkpoint(parameters.scene.output_directory,
-                                communicator);
+    // No other run may write the checkpoint while it is read.
+    OutputDirectory::lock(parameters.scene.output_directory,
+                          parameters.scene.name,
+                          communicator);
+    Checkpoint checkpoint(parameters.scene.output_directory, communicator);
+    checkpoint.select();
     const std::string grid_file = checkpoint.grid_file();
     const RunState    state     = checkpoint.read_state();
     if (state.get_string("scene.name") != parameters.scene.name)
@@ -510,6 +529,22 @@ namespace impm
                        parameters.scene.output_directory + "' is of scene '" +
                        state.get_string("scene.name") + "', not '" +
                        parameters.scene.name + "'.");
+    if (!options.resume_with_changes)
+      {
+        const std::vector<std::string> differences =
+          SceneRecord::differences(checkpoint.read_scene(),
+                                   SceneRecord::to_text(prm));
+        std::string list;
+        for (const auto &difference : differences)
+          list += (list.empty() ? "" : "; ") + difference;
+        if (!differences.empty())
+          throw InputError(
+            "--resume: the scene differs from the one the checkpoint was "
+            "written from in " +
+            std::to_string(differences.size()) + " entr" +
+            (differences.size() == 1 ? "y" : "ies") + ": " + list +
+            " (resume with that scene, or give --resume-with-changes).");
+      }
     MPMSolver<dim> solver(settings,
                           prm,
                           EffectRegistry::create_enabled<dim>(prm),

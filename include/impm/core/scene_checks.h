@@ -14,7 +14,10 @@ namespace impm
    * the scene has been read and before anything is built. Each failure is
    * an InputError naming the entries involved.
    *
-   * Checked here: every body lies inside the grid; every region of a face
+   * Checked here: every body lies inside the grid and has a density above
+   * 0; every rigid body moved by a prescribed displacement reaches the grid
+   * at its start or its end; no grid node is both held at 0 and moved by
+   * the face conditions of two adjacent faces; every region of a face
    * condition holds a node of its face; every displacement component is
    * held by some face condition near the material or a coupling (else the
    * system is singular: check_supports(), once the couplings exist); the memory

@@ -37,12 +37,15 @@ namespace impm
    *
    * A checkpoint is the directory `checkpoint/` in the output directory: the
    * grid with the points attached (`grid*`, deal.II's serialization of the
-   * distributed triangulation with the particle handler's data) and the
-   * replicated state (`state.txt`, a RunState). It is written as
-   * `checkpoint.tmp/` and takes the name `checkpoint/` only when complete;
-   * the previous checkpoint is kept (as `checkpoint.old/` during the swap)
-   * until then, so that a run killed at any moment leaves a complete
-   * checkpoint if it ever wrote one.
+   * distributed triangulation with the particle handler's data), the
+   * replicated state (`state.txt`, a RunState), the scene it was written
+   * from (`scene.prm`, see SceneRecord) and, written last, the manifest of
+   * these files with their sizes and checksums (`manifest.txt`, see
+   * CheckpointManifest). It is written as `checkpoint.tmp/` and takes the
+   * name `checkpoint/` only when complete; the previous checkpoint is kept
+   * as `checkpoint.old/`, so that a run killed at any moment leaves a
+   * complete checkpoint if it ever wrote one, and a resume can fall back to
+   * the previous checkpoint when the newest does not match its manifest.
    */
   class Checkpoint
   {
@@ -57,30 +60,44 @@ namespace impm
     /**
      * @brief Write a checkpoint (collective): @p save_grid saves the grid
      * and the points under the file name it is given, on every process;
-     * rank 0 writes @p state and puts the checkpoint in place.
+     * rank 0 writes @p state, the scene @p scene_text (from
+     * SceneRecord::to_text()) and the manifest, and puts the checkpoint in
+     * place.
      */
     void
     write(const std::function<void(const std::string &)> &save_grid,
-          const RunState                                 &state) const;
+          const RunState                                 &state,
+          const std::string                              &scene_text) const;
 
     /**
-     * @brief The grid file name of the newest complete checkpoint; an
-     * InputError if there is none.
+     * @brief Choose the checkpoint to resume from (collective; to be
+     * called before anything of it is read): rank 0 verifies the newest
+     * against its manifest and, if it is damaged, the previous one, which
+     * it then takes (saying so in one line, and keeping the damaged one as
+     * `checkpoint.damaged/`). A CollectiveError naming the damaged file if
+     * no checkpoint verifies, an error if there is none.
      */
+    void
+    select();
+
+    /** @brief The grid file name of the selected checkpoint. */
     std::string
     grid_file() const;
 
-    /** @brief The state of the newest complete checkpoint. */
+    /** @brief The state of the selected checkpoint. */
     RunState
     read_state() const;
 
-  private:
-    /** The directory of the newest complete checkpoint, or "". */
+    /** @brief The scene the selected checkpoint was written from (a
+     *  parameter file, see SceneRecord). */
     std::string
-    newest() const;
+    read_scene() const;
 
+  private:
     const std::string output_directory;
     const MPI_Comm    communicator;
+    /** The directory of the selected checkpoint ("" before select()). */
+    std::string directory;
   };
 } // namespace impm
 

@@ -20,7 +20,8 @@ namespace impm
    * directories) are removed first,
    * so that old and new results never mix. Leftover `*.tmp` files of an
    * interrupted write are always removed. Files IMPM does not write are
-   * left alone.
+   * left alone. A run holds a lock on the directory (lock()), so that two
+   * runs never write in it at once.
    */
   class OutputDirectory
   {
@@ -47,6 +48,22 @@ namespace impm
             const std::string &scene_file,
             const ExistingRun  existing_run,
             const MPI_Comm     communicator);
+
+    /**
+     * @brief Lock @p path for this run (collective; rank 0 takes an
+     * advisory `flock` on the file lock_file in it, which it holds until
+     * it exits, and records in it the scene, its process id, host and
+     * start time). A run that finds the lock taken stops with an
+     * InputError naming the run that holds it. Nothing is done if @p path
+     * is not a directory; prepare() takes the lock as well.
+     */
+    static void
+    lock(const std::string &path,
+         const std::string &scene_name,
+         const MPI_Comm     communicator);
+
+    /** The name of the lock file in an output directory. */
+    static constexpr const char *lock_file = "impm.lock";
 
     /** The name of the file that records the run in its directory. */
     static constexpr const char *record_file = "impm-run.txt";

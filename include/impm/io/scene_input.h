@@ -19,7 +19,7 @@ namespace impm
     /**
      * @brief Parse the scene file @p file_name into @p prm. A file that
      * cannot be read, that sets no entry, or that the parser rejects is an
-     * InputError.
+     * InputError. A UTF-8 byte-order mark at the start is skipped.
      */
     void
     parse_file(dealii::ParameterHandler &prm, const std::string &file_name);

@@ -41,6 +41,14 @@ namespace impm
      */
     static double
     max_deviation(const RunContext<dim> &context);
+
+    /**
+     * @brief An InputError if the scene @p parameters is not a column the
+     * solution describes: one box body under gravity along the last axis
+     * only (checked when 'Output/Analytical solution' = column).
+     */
+    static void
+    check_scene(const Parameters::All<dim> &parameters);
   };
 } // namespace impm
 

@@ -108,8 +108,8 @@ namespace impm
                      const unsigned int     step_number,
                      const double           elapsed);
 
-    /** Whether to stop (and checkpoint) now: a SIGTERM or SIGUSR1 arrived
-     *  on any process, or the wall-time limit has passed; the reason. */
+    /** Whether to stop (and checkpoint) now: a SIGTERM, SIGINT or SIGUSR1
+     * arrived on any process, or the wall-time limit has passed; the reason. */
     std::string
     reason_to_stop(const double elapsed) const;
 
@@ -118,6 +118,9 @@ namespace impm
     /** The scene's parameter file (postprocessors read their subsections
      *  when the run starts). */
     ParameterHandler &prm;
+    /** The scene as kept in each checkpoint (SceneRecord::to_text(), made
+     *  at the first checkpoint: the scene does not change in a run). */
+    std::string scene_text;
     /** The scene's description (settings.scene). */
     const Parameters::All<dim>                          &parameters;
     const std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects;

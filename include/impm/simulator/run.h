@@ -27,6 +27,9 @@ namespace impm
     unsigned int stop_after_step = 0;
     /** Continue from the newest checkpoint in the output directory. */
     bool resume = false;
+    /** On a resume, accept a scene that differs from the checkpoint's in
+     *  entries that may not change (see SceneRecord). */
+    bool resume_with_changes = false;
   };
 
   /**
