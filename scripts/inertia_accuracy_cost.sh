@@ -57,14 +57,15 @@ for ((r = 0; r < repeats; ++r)); do
     --set "Inertia/Mass damping=2"
 done
 echo "1. vibrating bar, v0 = 0.01 m/s, two periods"
-printf "%-18s %10s %12s %12s %12s %9s\n" case steps/period "u error" "period err" "energy diff" "wall s"
+printf "%-18s %10s %12s %12s %12s %9s %5s\n" case steps/period "u error" "period err" "energy diff" "wall s" cuts
 for case in "${bar_cases[@]}"; do
   name=${case%%:*}
   /usr/bin/python3 - "$name" "${best[$name]}" <<'PY'
 import csv, math, sys
 name, wall = sys.argv[1], float(sys.argv[2])
 rows = list(csv.DictReader(open(name + "/point_history.csv")))
-steps = list(csv.DictReader(open(name + "/steps.csv")))
+attempts = list(csv.DictReader(open(name + "/steps.csv")))
+steps = [r for r in attempts if r["converged"] == "1"]
 omega = math.pi * 10 / 50
 amp = 0.01 / omega * math.sin(math.pi * float(rows[0]["x"]) / 50)
 t = [float(r["time"]) for r in rows]; u = [float(r["displacement_x"]) for r in rows]
@@ -73,7 +74,7 @@ c = [t[k-1] + (t[k]-t[k-1]) * u[k-1] / (u[k-1] - u[k]) for k in range(1, len(u))
 period = (c[-1] - c[0]) / (len(c) - 1)
 e0 = 0.5 * 0.01 ** 2 * 25 / 2
 de = max(abs(float(r["total_energy"]) - e0) for r in steps) / e0
-print("%-18s %10d %12.2e %12.2e %12.2e %9.3f" % (name, round(len(steps) / 2), err, period / 10 - 1, de, wall))
+print("%-18s %10d %12.2e %12.2e %12.2e %9.3f %5d" % (name, round(len(steps) / 2), err, period / 10 - 1, de, wall, len(attempts) - len(steps)))
 PY
 done
 echo
