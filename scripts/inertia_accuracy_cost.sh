@@ -8,6 +8,9 @@
 #     repeat interleaved: the largest tip displacement error over the first
 #     period (of the amplitude), the period's error, the total energy's
 #     largest difference, and the wall time (the smallest of the repeats).
+#  1b. The bar over ten periods: the trapezoidal rule's energy loss at 50,
+#     100 and 200 steps a period, generalised-alpha's beyond it at spectral
+#     radii 1, 0.8, 0.5 and 0 (100 steps a period), mass damping's decay.
 #  2. The paper's collapse with inertia (tests/collapse_h1.prm, gravity at
 #     once, mass damping 2 1/s, 8 s): generalised-alpha (160 steps) and
 #     explicit MUSL (640 steps, the stable step at Courant number 0.5 is
@@ -77,6 +80,40 @@ de = max(abs(float(r["total_energy"]) - e0) for r in steps) / e0
 print("%-18s %10d %12.2e %12.2e %12.2e %9.3f %5d" % (name, round(len(steps) / 2), err, period / 10 - 1, de, wall, len(attempts) - len(steps)))
 PY
 done
+echo
+echo "1b. vibrating bar, v0 = 0.01 m/s, ten periods: the total energy's loss a period"
+echo "    (the slope over the second half) and its loss at the end"
+ten=(--set "Time/End time=100" --set "Inertia/Initial velocity=0.01*sin(pi*x/50); 0")
+run ten_trapezoidal_50 "$bar" "${ten[@]}" --set "Solver/Load steps=500"
+run ten_trapezoidal_100 "$bar" "${ten[@]}" --set "Solver/Load steps=1000"
+run ten_trapezoidal_200 "$bar" "${ten[@]}" --set "Solver/Load steps=2000"
+for rho in 1 0.8 0.5 0; do
+  run "ten_alpha_$rho" "$bar" "${ten[@]}" --set "Solver/Load steps=1000" \
+    --set "Inertia/Integrator=generalised-alpha" --set "Inertia/Spectral radius=$rho"
+done
+run ten_damped "$bar" "${ten[@]}" --set "Solver/Load steps=1000" --set "Inertia/Mass damping=0.01"
+/usr/bin/python3 - <<'PY'
+import csv, math
+def series(name):
+    rows = [r for r in csv.DictReader(open(name + "/steps.csv")) if r["converged"] == "1"]
+    return [float(r["time"]) for r in rows], [float(r["total_energy"]) for r in rows], [float(r["kinetic_energy"]) for r in rows]
+e0 = 0.5 * 0.01 ** 2 * 25 / 2
+def slope(name):
+    t, e, _ = series(name)
+    h = len(t) // 2
+    return (e[h] - e[-1]) / e0 / ((t[-1] - t[h]) / 10)
+for n in (50, 100, 200):
+    t, e, _ = series("ten_trapezoidal_%d" % n)
+    print("trapezoidal, %3d steps a period: %.2e a period, %.2e at 100 s" % (n, slope("ten_trapezoidal_%d" % n), 1 - e[-1] / e0))
+base = slope("ten_trapezoidal_100")
+for rho in ("1", "0.8", "0.5", "0"):
+    print("generalised-alpha, spectral radius %-3s: %.2e a period beyond the trapezoidal rule's" % (rho, slope("ten_alpha_" + rho) - base))
+t, _, k = series("ten_damped")
+peaks = [(t[i], k[i]) for i in range(1, len(k) - 1) if k[i] >= k[i - 1] and k[i] > k[i + 1]]
+tp, kp = peaks[-1]
+print("mass damping 0.01 1/s: kinetic energy at its last peak (t = %.1f s) %.3f of the initial, exp(-0.01 t) = %.3f"
+      % (tp, kp / e0, math.exp(-0.01 * tp)))
+PY
 echo
 echo "2. collapse with inertia (8 s, mass damping 2 1/s)"
 for name in collapse_implicit collapse_explicit; do

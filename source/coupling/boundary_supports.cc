@@ -61,12 +61,12 @@ namespace impm
                       const double               tangential_stiffness,
                       const double               normal_viscosity,
                       const double               tangential_viscosity)
-        : boundary(inputs.prm, section)
-        , column_prefix(column_prefix)
-        , normal_stiffness(normal_stiffness)
+        : normal_stiffness(normal_stiffness)
         , tangential_stiffness(tangential_stiffness)
         , normal_viscosity(normal_viscosity)
         , tangential_viscosity(tangential_viscosity)
+        , boundary(inputs.prm, section)
+        , column_prefix(column_prefix)
         , bodies(inputs.parameters.bodies)
         , grid(inputs.grid)
       {}
@@ -301,6 +301,13 @@ namespace impm
       }
 
     protected:
+      /** The springs' stiffness (Pa/m) and the dashpots' viscosity
+       *  (Pa s/m) per unit area, along the face's normal and across it. */
+      const double normal_stiffness;
+      const double tangential_stiffness;
+      const double normal_viscosity;
+      const double tangential_viscosity;
+
       /** @brief Whether the supports have dashpots. */
       bool
       has_dashpots() const
@@ -370,10 +377,6 @@ namespace impm
       BoundarySelection<dim> boundary;
       /** The first word of the force columns in steps.csv. */
       const std::string             column_prefix;
-      const double                  normal_stiffness;
-      const double                  tangential_stiffness;
-      const double                  normal_viscosity;
-      const double                  tangential_viscosity;
       const std::vector<Body<dim>> &bodies;
       const BackgroundGrid<dim>    &grid;
       /** Whether the boundary points are found (at the first step). */
@@ -435,10 +438,9 @@ namespace impm
                                inputs.prm.get_double("Tangential stiffness"),
                                0.,
                                0.)
-        , normal_stiffness(inputs.prm.get_double("Normal stiffness"))
-        , tangential_stiffness(inputs.prm.get_double("Tangential stiffness"))
       {
-        if (!(normal_stiffness > 0.) && !(tangential_stiffness > 0.))
+        if (!(this->normal_stiffness > 0.) &&
+            !(this->tangential_stiffness > 0.))
           throw InputError("Winkler springs: give a 'Normal stiffness' or a "
                            "'Tangential stiffness' above zero (both are 0).");
       }
@@ -447,14 +449,10 @@ namespace impm
       descriptions() const override
       {
         std::ostringstream out;
-        out << "Winkler springs: " << normal_stiffness << " Pa/m normal, "
-            << tangential_stiffness << " Pa/m tangential";
+        out << "Winkler springs: " << this->normal_stiffness << " Pa/m normal, "
+            << this->tangential_stiffness << " Pa/m tangential";
         return {this->description(out.str())};
       }
-
-    private:
-      const double normal_stiffness;
-      const double tangential_stiffness;
     };
 
 
@@ -511,8 +509,6 @@ namespace impm
                                0.,
                                normal_impedance(inputs),
                                shear_impedance(inputs))
-        , p_impedance(normal_impedance(inputs))
-        , s_impedance(shear_impedance(inputs))
       {
         if (!inputs.time.in_time())
           throw InputError("Absorbing boundary needs time: set 'Time/End "
@@ -523,8 +519,9 @@ namespace impm
       descriptions() const override
       {
         std::ostringstream out;
-        out << "absorbing boundary: dashpots of " << p_impedance
-            << " Pa s/m normal, " << s_impedance << " Pa s/m tangential";
+        out << "absorbing boundary: dashpots of " << this->normal_viscosity
+            << " Pa s/m normal, " << this->tangential_viscosity
+            << " Pa s/m tangential";
         return {this->description(out.str())};
       }
 
@@ -552,9 +549,6 @@ namespace impm
         const double nu  = inputs.prm.get_double("Poisson's ratio");
         return std::sqrt(rho * E / (2. * (1. + nu)));
       }
-
-      const double p_impedance;
-      const double s_impedance;
     };
   } // namespace
 
