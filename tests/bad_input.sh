@@ -235,6 +235,10 @@ expect absorbing_without_time "Absorbing boundary needs time: set 'Time/End time
 expect absorbing_without_material "Absorbing boundary: give the 'Density' and 'Young's modulus' \\(> 0\\)" - -- "$base" --set "Time/End time=1" --set "Absorbing boundary/Enabled=true"
 expect explicit_above_stable_step "Inertia: the time step 0.5 s is above the stable explicit step .* s \\(Courant number 0.5, smallest cell" - -- "$base" --set "Time/End time=1" --set "Time/Time step=0.5" --set "Inertia/Enabled=true" --set "Inertia/Integrator=explicit MUSL"
 expect explicit_with_dashpots "Absorbing boundary: its dashpots act on the step's mean velocity, which an explicit step does not solve for" - -- "$base" --set "Time/End time=1" --set "Time/Time step=0.01" --set "Inertia/Enabled=true" --set "Inertia/Integrator=explicit MUSL" --set "Absorbing boundary/Enabled=true" --set "Absorbing boundary/Density=1" --set "Absorbing boundary/Young's modulus=1"
+# Strength reduction.
+expect strength_reduction_elastic "Strength reduction: no body's material has a strength to reduce \\(the bodies are elastic\\)" - -- "$base" --set "Body 1/Material/Model=Hencky elastic" --set "Strength reduction/Enabled=true"
+expect strength_reduction_resume "A strength reduction cannot be resumed: its trials are whole runs of the scene" also_parallel -- "$base" --set "Strength reduction/Enabled=true" --resume
+expect strength_reduction_inertia "'Strength reduction/Enabled' = 'true' needs a quasi-static scene" - -- "$base" --set "Strength reduction/Enabled=true" --set "Time/End time=1" --set "Inertia/Enabled=true"
 expect inertia_without_time "Inertia needs time: set 'Time/End time' above 0 \\(the load steps are then time steps\\)." - -- "$base" --set "Inertia/Enabled=true"
 expect time_step_without_end_time "Parameter 'Time/Time step' = 0.100000 needs 'Time/End time' above 0" - -- "$base" --set "Time/Time step=0.1"
 expect time_step_above_end_time "Parameter 'Time/Time step' = 2.000000 is not allowed: it must be at most 'Time/End time' = 1.000000." - -- "$base" --set "Time/End time=1" --set "Time/Time step=2"

@@ -125,7 +125,7 @@ namespace impm
   OutputDirectory::is_run_file(const std::string &file_name)
   {
     static const std::regex run_file(
-      R"(^(steps\.csv|newton\.csv|summary\.json|impm-run\.txt|points(_\d+(\.\d+)?|_parts)?\.(vtu|pvtu|pvd|h5|xdmf)|rigid_\d+_\d+\.vtu)(\.tmp)?$)");
+      R"(^(steps\.csv|newton\.csv|summary\.json|factor_of_safety\.csv|impm-run\.txt|points(_\d+(\.\d+)?|_parts)?\.(vtu|pvtu|pvd|h5|xdmf)|rigid_\d+_\d+\.vtu)(\.tmp)?$)");
     return std::regex_match(file_name, run_file);
   }
 

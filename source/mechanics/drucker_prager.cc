@@ -13,6 +13,14 @@ namespace impm
 
 
 
+  std::unique_ptr<Material>
+  DruckerPrager::with_reduced_strength(const double factor) const
+  {
+    return std::make_unique<DruckerPrager>(parameters.reduced(factor), match);
+  }
+
+
+
   DruckerPrager::DruckerPrager(const FrictionalParameters &parameters,
                                const Match                 match)
     : PrincipalStressPlasticity(parameters,

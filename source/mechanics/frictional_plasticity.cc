@@ -90,6 +90,20 @@ namespace impm
 
 
 
+  FrictionalParameters
+  FrictionalParameters::reduced(const double factor) const
+  {
+    FrictionalParameters result = *this;
+    result.cohesion.initial /= factor;
+    result.cohesion.residual /= factor;
+    result.cohesion.hardening_modulus /= factor;
+    result.friction_angle = std::atan(std::tan(friction_angle) / factor);
+    result.dilation_angle = std::atan(std::tan(dilation_angle) / factor);
+    return result;
+  }
+
+
+
   std::string
   FrictionalParameters::description() const
   {

@@ -70,6 +70,27 @@ namespace impm
 
 
 
+  std::unique_ptr<Material>
+  Material::with_reduced_strength(const double) const
+  {
+    throw InputError("The material '" + description() +
+                     "' has no strength reduction: a factor of safety needs "
+                     "one of the models that define it (von Mises, "
+                     "Mohr-Coulomb, Drucker-Prager, Modified Cam-clay).");
+  }
+
+
+
+  std::unique_ptr<Material>
+  HenckyVonMises::with_reduced_strength(const double factor) const
+  {
+    return std::make_unique<HenckyVonMises>(youngs_modulus,
+                                            poissons_ratio,
+                                            yield_stress / factor);
+  }
+
+
+
   HenckyVonMises::HenckyVonMises(const double youngs_modulus,
                                  const double poissons_ratio,
                                  const double yield_stress)

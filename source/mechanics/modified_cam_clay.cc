@@ -107,6 +107,20 @@ namespace impm
 
 
 
+  std::unique_ptr<Material>
+  ModifiedCamClay::with_reduced_strength(const double factor) const
+  {
+    const double M = parameters.critical_state_ratio;
+    const double friction_angle =
+      std::atan(std::tan(std::asin(3. * M / (6. + M))) / factor);
+    Parameters reduced = parameters;
+    reduced.critical_state_ratio =
+      6. * std::sin(friction_angle) / (3. - std::sin(friction_angle));
+    return std::make_unique<ModifiedCamClay>(reduced);
+  }
+
+
+
   ModifiedCamClay::ModifiedCamClay(const Parameters &parameters)
     : parameters(parameters)
     , kappa_star(parameters.kappa / (1. + parameters.initial_void_ratio))

@@ -22,6 +22,17 @@ namespace impm
 
 
 
+  std::unique_ptr<Material>
+  MohrCoulomb::with_reduced_strength(const double factor) const
+  {
+    return std::make_unique<MohrCoulomb>(parameters.reduced(factor),
+                                         tensile_strength < 0. ?
+                                           tensile_strength :
+                                           tensile_strength / factor);
+  }
+
+
+
   MohrCoulomb::MohrCoulomb(const FrictionalParameters &parameters,
                            const double                tensile_strength)
     : PrincipalStressPlasticity(parameters,

@@ -464,7 +464,7 @@ namespace impm
     const auto messages = Utilities::MPI::all_gather(communicator, left_grid);
     for (const auto &message : messages)
       if (!message.empty())
-        throw CollectiveError(message);
+        throw PointLeftGrid(message);
   }
 
 

@@ -104,9 +104,20 @@ namespace impm
                  const RunStatistics<dim> &) override
       {
         const unsigned int interval = context.output.interval;
+        if (record.converged())
+          last_converged_step = record.step_number;
         if (record.converged() &&
             (record.step_number % interval == 0 || record.last))
           write(context, record.target, record.step_number);
+      }
+
+      /** The last converged state, unless it was written already. */
+      void
+      after_failure(const RunContext<dim> &context,
+                    const double           converged_load_factor) override
+      {
+        if (last_converged_step != last_written_step)
+          write(context, converged_load_factor, last_converged_step);
       }
 
     private:
@@ -219,6 +230,7 @@ namespace impm
       {
         TimerOutput::Scope scope(context.timer, "output");
         this->load_factor   = load_factor;
+        last_written_step   = load_step;
         const auto  &fields = context.output.fields;
         const auto  &points = context.material_points;
         const double this_rank =
@@ -274,6 +286,10 @@ namespace impm
       bool                                   body;
       /** The load factor of the output being written. */
       double load_factor = 0.;
+      /** The step of the last converged attempt (0: the start). */
+      unsigned int last_converged_step = 0;
+      /** The step whose points were written last. */
+      unsigned int last_written_step = 0;
     };
   } // namespace
   IMPM_REGISTER_POSTPROCESSOR(PointFiles,

@@ -211,6 +211,13 @@ namespace impm
 
 
   template <int dim>
+  void
+  Postprocessor<dim>::after_failure(const RunContext<dim> &, const double)
+  {}
+
+
+
+  template <int dim>
   PostprocessorManager<dim>::PostprocessorManager(
     const RunContext<dim> &run_context)
     : context(run_context)
@@ -312,6 +319,18 @@ namespace impm
     for (const auto &postprocessor : postprocessors)
       run_collectively(context.communicator,
                        [&]() { postprocessor->finish(context, statistics); });
+  }
+
+
+
+  template <int dim>
+  void
+  PostprocessorManager<dim>::after_failure(const double converged_load_factor)
+  {
+    for (const auto &postprocessor : postprocessors)
+      run_collectively(context.communicator, [&]() {
+        postprocessor->after_failure(context, converged_load_factor);
+      });
   }
 
 

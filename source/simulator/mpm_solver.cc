@@ -8,6 +8,7 @@
 #include <impm/postprocess/column_solution.h>
 #include <impm/simulator/mpm_solver.h>
 #include <impm/simulator/run.h>
+#include <impm/simulator/strength_reduction.h>
 
 #include <csignal>
 #include <filesystem>
@@ -173,11 +174,32 @@ namespace impm
           {
             accept_load_step(record);
             balance_load();
+            converged_step = record.step_number;
+            converged_load = record.target;
           }
         postprocessors->after_step(record);
-        control.update(record.newton);
+        try
+          {
+            control.update(record.newton);
+          }
+        catch (const LoadStepFailure &failure)
+          {
+            postprocessors->after_failure(failure.converged_load_factor);
+            throw;
+          }
         if (!record.converged())
           continue;
+        if (stop_condition)
+          {
+            stop_reason = stop_condition();
+            if (!stop_reason.empty())
+              {
+                root_out << "Stopped after load step " << record.step_number
+                         << " (" << stop_reason << ")." << std::endl;
+                postprocessors->after_failure(control.start());
+                return;
+              }
+          }
         const std::string stop = reason_to_stop(wall_timer.wall_time());
         if (!stop.empty() ||
             (settings.checkpoint.interval > 0 &&
@@ -507,6 +529,11 @@ namespace impm
     if (settings.output.analytical_solution ==
         Parameters::AnalyticalSolution::column)
       ColumnSolution<dim>::check_scene(parameters);
+    if (StrengthReduction<dim>::enabled(prm))
+      {
+        StrengthReduction<dim>::run(prm, options, communicator);
+        return;
+      }
     if (!options.resume)
       {
         MPMSolver<dim> solver(settings,

@@ -3,6 +3,7 @@
 #include <impm/postprocess/postprocessor.h>
 #include <impm/simulator/material_test.h>
 #include <impm/simulator/run.h>
+#include <impm/simulator/strength_reduction.h>
 
 namespace impm
 {
@@ -18,5 +19,6 @@ namespace impm
     Couplings<2>::declare_parameters(prm);
     PostprocessorManager<2>::declare_parameters(prm);
     MaterialTest::Parameters::declare_parameters(prm);
+    Parameters::StrengthReduction::declare_parameters(prm);
   }
 } // namespace impm

@@ -67,15 +67,17 @@ namespace impm
               << record.last_internal_force_norm
               << " N): set 'Solver/Absolute tolerance' above it.";
     if (!parameters.step_control)
-      throw CollectiveError(message.str() +
-                            " Relative residuals:" + failures.str());
+      throw LoadStepFailure(message.str() +
+                              " Relative residuals:" + failures.str(),
+                            load_factor);
     step_size /= 2.;
     if (step_size < parameters.minimum_step)
-      throw CollectiveError(
+      throw LoadStepFailure(
         message.str() +
-        " The load increment would fall below 'Solver/Minimum load step' = " +
-        std::to_string(parameters.minimum_step) +
-        ". Attempts:" + failures.str());
+          " The load increment would fall below 'Solver/Minimum load step' = " +
+          std::to_string(parameters.minimum_step) +
+          ". Attempts:" + failures.str(),
+        load_factor);
   }
 
 

@@ -43,6 +43,47 @@ namespace impm
 
 
   /**
+   * @brief A load step that cannot be solved: its Newton solve failed at
+   * the smallest load increment the step control allows (or at once, with
+   * the control off). Every process raises it together. It carries the
+   * load factor of the last converged step, which a strength reduction
+   * reads as how far the trial carried the scene's load.
+   */
+  class LoadStepFailure : public CollectiveError
+  {
+  public:
+    /**
+     * @brief Constructor.
+     * @param message The one-line report (step, outcome, residuals).
+     * @param converged_load_factor The load factor of the last converged
+     *   step (0 if none converged).
+     */
+    LoadStepFailure(const std::string &message,
+                    const double       converged_load_factor)
+      : CollectiveError(message)
+      , converged_load_factor(converged_load_factor)
+    {}
+
+    /** The load factor of the last converged step. */
+    double converged_load_factor;
+  };
+
+
+
+  /**
+   * @brief A material point that a converged load step moved outside the
+   * background grid (or to a non-finite position). Every process raises it
+   * together; a strength reduction counts it as a failed trial.
+   */
+  class PointLeftGrid : public CollectiveError
+  {
+  public:
+    using CollectiveError::CollectiveError;
+  };
+
+
+
+  /**
    * @brief The collective check before a collective operation: if
    * @p local_error is not empty on any process, every process throws a
    * CollectiveError with the message of the lowest such rank (prefixed by

@@ -56,6 +56,10 @@ namespace impm
     std::string
     description() const override;
 
+    /** @brief FrictionalParameters::reduced(), fitted as before. */
+    std::unique_ptr<Material>
+    with_reduced_strength(const double factor) const override;
+
     /** @brief The constants @f$\{\eta, \xi, \bar\eta\}@f$ of a match. */
     static std::array<double, 3>
     cone_constants(const double friction_angle,

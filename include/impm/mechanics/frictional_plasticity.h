@@ -74,6 +74,16 @@ namespace impm
     /** @brief "E = ..., nu = ..., c = ..., phi = ..., psi = ..." (and H). */
     std::string
     description() const;
+
+    /**
+     * @brief The parameters of a strength reduction by @p factor: the
+     * cohesion law (initial, residual, hardening modulus) divided by it,
+     * @f$\tan\phi_F = \tan\phi / F@f$ and @f$\tan\psi_F = \tan\psi /
+     * F@f$ (so that the dilation angle stays below the friction angle), the
+     * elastic constants unchanged.
+     */
+    FrictionalParameters
+    reduced(const double factor) const;
   };
 
   /**

@@ -316,6 +316,17 @@ namespace impm
      */
     virtual double
     p_wave_modulus() const = 0;
+
+    /**
+     * @brief The same model with its strength divided by @p factor (> 0),
+     * for a strength reduction (StrengthReduction): the cohesion, the
+     * tangents of the friction and dilation angles, a yield stress or a
+     * critical-state ratio's friction angle, each as the model says; the
+     * elastic constants and the state variables' meaning unchanged. The
+     * default refuses a model that does not say (one line naming it).
+     */
+    virtual std::unique_ptr<Material>
+    with_reduced_strength(const double factor) const;
   };
 
   /**
@@ -411,6 +422,13 @@ namespace impm
     {
       return lambda + 2. * mu;
     }
+
+    /**
+     * @brief The yield stress divided by @p factor (the undrained strength
+     * of a total-stress analysis); an elastic model unchanged.
+     */
+    std::unique_ptr<Material>
+    with_reduced_strength(const double factor) const override;
 
   private:
     /**

@@ -218,6 +218,16 @@ namespace impm
     description() const override;
 
     /**
+     * @brief M reduced through the friction angle it has in triaxial
+     * compression, @f$\sin\phi = 3M/(6 + M)@f$: @f$\tan\phi_F = \tan\phi
+     * / F@f$ and @f$M_F = 6 \sin\phi_F / (3 - \sin\phi_F)@f$; the
+     * compression and swelling lines, the shear modulus and the
+     * preconsolidation pressure unchanged.
+     */
+    std::unique_ptr<Material>
+    with_reduced_strength(const double factor) const override;
+
+    /**
      * @brief The initial void ratio @f$e_0@f$: the void ratio of a point
      * whose deformation gradient has determinant J is @f$(1 + e_0) J - 1@f$.
      */

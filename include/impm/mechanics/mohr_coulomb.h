@@ -52,6 +52,13 @@ namespace impm
     std::string
     description() const override;
 
+    /**
+     * @brief FrictionalParameters::reduced(), and the tensile strength
+     * divided by @p factor.
+     */
+    std::unique_ptr<Material>
+    with_reduced_strength(const double factor) const override;
+
   protected:
     void
     principal_return(const std::array<double, 3> &trial_strain,

@@ -248,6 +248,16 @@ namespace impm
     virtual void
     finish(const RunContext<dim>    &context,
            const RunStatistics<dim> &statistics);
+
+    /**
+     * @brief Called once when the run stops on a load step it cannot
+     * solve (LoadStepFailure), with the points at the last converged
+     * step, whose load factor is @p converged_load_factor: the point files
+     * then end with the state the failure started from.
+     */
+    virtual void
+    after_failure(const RunContext<dim> &context,
+                  const double           converged_load_factor);
   };
 
   /** @brief The registry of postprocessors (see PluginList). */
@@ -294,6 +304,10 @@ namespace impm
     /** @brief Measure the final state and write the run's summaries. */
     void
     finish(const double wall_time);
+
+    /** @brief See Postprocessor::after_failure(). */
+    void
+    after_failure(const double converged_load_factor);
 
   private:
     RunContext<dim>                                  context;

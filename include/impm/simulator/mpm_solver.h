@@ -21,6 +21,7 @@
 #include <impm/solver/newton_solver.h>
 #include <impm/system/load_step_system.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -73,6 +74,47 @@ namespace impm
      */
     void
     run();
+
+    /** @brief The material points (at the last converged step). */
+    const MaterialPoints<dim> &
+    points() const
+    {
+      return material_points;
+    }
+
+    /** @brief The number of the last converged load step (0: none). */
+    unsigned int
+    last_converged_step() const
+    {
+      return converged_step;
+    }
+
+    /**
+     * @brief A test run() makes after every converged load step, on every
+     * process: a non-empty reason stops the run there (the point files end
+     * with that step, no summary is written), as a strength reduction's
+     * displacement limit does. It must be collective (the same answer on
+     * every process).
+     */
+    void
+    set_stop_condition(const std::function<std::string()> &condition)
+    {
+      stop_condition = condition;
+    }
+
+    /** @brief The load factor of the last converged load step. */
+    double
+    converged_load_factor() const
+    {
+      return converged_load;
+    }
+
+    /** @brief The reason the stop condition gave, or empty. */
+    const std::string &
+    stopped_by_condition() const
+    {
+      return stop_reason;
+    }
 
   private:
     /** Create the output directory and start the effects and the
@@ -146,6 +188,14 @@ namespace impm
     std::unique_ptr<PostprocessorManager<dim>> postprocessors;
     /** The checkpoint's state in a resumed run, else null. */
     const RunState *resume_state;
+    /** The number of the last converged load step. */
+    unsigned int converged_step = 0;
+    /** The load factor of the last converged load step. */
+    double converged_load = 0.;
+    /** See set_stop_condition(). */
+    std::function<std::string()> stop_condition;
+    /** What stop_condition said when it stopped the run. */
+    std::string stop_reason;
   };
 } // namespace impm
 
