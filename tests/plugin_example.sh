@@ -9,7 +9,8 @@
 # that of the same scene with the built-in "Hencky elastic", and its step-1
 # error, mass and base reaction equal the hand-checked expected.txt (see
 # column.prm); --print-parameters lists the plugin; a library that does not
-# exist and a file that is not a library are each one error line.
+# exist, a file that is not a library and a second copy of the plugin (its
+# name registered twice) are each one error line.
 # Usage: plugin_example.sh IMPM EXAMPLE_FOLDER [MPIEXEC N]
 example=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -48,17 +49,24 @@ compare checked.txt "$example/expected.txt" "the hand-checked numbers differ"
 grep -q "subsection plugin elastic" parameters.txt ||
   fail "--print-parameters does not list the plugin's subsection"
 
-# bad LIBRARY REGEX: the scene with that library is one error line.
+# bad LIBRARIES REGEX: the scene with those libraries is one error line
+# matching REGEX.
 bad() {
   "${installed[@]}" scene.prm --set "Additional shared libraries=$1" \
     > out.txt 2>&1 && fail "'$1' was accepted"
   [ "$(grep -c '^Error: ' out.txt)" -eq 1 ] || { cat out.txt; fail "'$1': not one error line"; }
-  grep -qE "^Error: 'Additional shared libraries': cannot load '$2" out.txt ||
-    { cat out.txt; fail "'$1': the error does not name the library"; }
+  grep -qE "^Error: 'Additional shared libraries': $2" out.txt ||
+    { cat out.txt; fail "'$1': not the expected error"; }
   if [ ${#launcher[@]} -eq 0 ]; then
     [ "$(wc -l < out.txt)" -eq 1 ] || { cat out.txt; fail "'$1': more than one line"; }
   fi
 }
-bad /nonexistent/libnothing.so "/nonexistent/libnothing.so': .*No such file"
-bad "$work/scene.prm" ".*scene.prm': .*(invalid ELF header|file too short)"
+bad /nonexistent/libnothing.so \
+  "cannot load '/nonexistent/libnothing.so': .*No such file"
+bad "$work/scene.prm" \
+  "cannot load '.*scene.prm': .*(invalid ELF header|file too short)"
+# A copy of the plugin (another file) registers its name a second time.
+mkdir copy && cp plugin_build/libplugin_elastic.so copy/
+bad "$work/plugin_build/libplugin_elastic.so, $work/copy/libplugin_elastic.so" \
+  "the library '.*copy/libplugin_elastic.so': two plugins are registered as 'plugin elastic'\.$"
 echo "installed, the plugin built and run: the same numbers as Hencky elastic"
