@@ -252,6 +252,9 @@ main(int argc, char **argv)
         impm::SceneInput::parse_file(prm, scene_file);
       for (const auto &assignment : command_line.overrides)
         impm::SceneInput::apply_override(prm, assignment);
+      impm::SharedLibraries::check_read(prm,
+                                        scene_file,
+                                        command_line.overrides);
       impm::SceneInput::check_numbers(prm);
       impm::SceneInput::resolve_paths(prm, scene_file);
 

@@ -127,32 +127,68 @@ namespace impm
 
 
 
+    namespace
+    {
+      /**
+       * The value of the entry as the scene file @p scene_file and the
+       * overrides @p overrides give it (the last override that sets it
+       * wins), with the directory its relative paths are relative to; an
+       * empty value if neither sets it.
+       */
+      std::pair<std::string, std::string>
+      value_named(const std::string              &scene_file,
+                  const std::vector<std::string> &overrides)
+      {
+        std::pair<std::string, std::string> named;
+        if (!scene_file.empty())
+          {
+            std::ifstream     in(scene_file);
+            std::stringstream text;
+            if (in)
+              text << in.rdbuf();
+            const auto [found, value] = value_in_scene(text.str());
+            if (found)
+              named = {
+                value,
+                std::filesystem::absolute(scene_file).parent_path().string()};
+          }
+        for (const std::string &assignment : overrides)
+          {
+            const auto equals = assignment.find('=');
+            if (equals != std::string::npos &&
+                collapse_white_space(assignment.substr(0, equals)) == entry)
+              named = {assignment.substr(equals + 1),
+                       std::filesystem::current_path().string()};
+          }
+        return named;
+      }
+    } // namespace
+
+
+
     std::vector<std::string>
     libraries_named(const std::string              &scene_file,
                     const std::vector<std::string> &overrides)
     {
-      std::vector<std::string> libraries;
-      if (!scene_file.empty())
-        {
-          std::ifstream     in(scene_file);
-          std::stringstream text;
-          if (in)
-            text << in.rdbuf();
-          const auto [found, value] = value_in_scene(text.str());
-          if (found)
-            libraries = split_value(
-              value,
-              std::filesystem::absolute(scene_file).parent_path().string());
-        }
-      for (const std::string &assignment : overrides)
-        {
-          const auto equals = assignment.find('=');
-          if (equals != std::string::npos &&
-              collapse_white_space(assignment.substr(0, equals)) == entry)
-            libraries = split_value(assignment.substr(equals + 1),
-                                    std::filesystem::current_path().string());
-        }
-      return libraries;
+      const auto [value, directory] = value_named(scene_file, overrides);
+      return split_value(value, directory);
+    }
+
+
+
+    void
+    check_read(const dealii::ParameterHandler &prm,
+               const std::string              &scene_file,
+               const std::vector<std::string> &overrides)
+    {
+      const std::string value = prm.get(entry);
+      if (split_value(value, "") !=
+          split_value(value_named(scene_file, overrides).first, ""))
+        throw InputError(
+          "'" + entry + "' = '" + value +
+          "' is set where it is read too late (in a file the scene "
+          "includes?): the libraries are loaded before the scene is read, "
+          "from the entry in the scene file itself or from --set.");
     }
 
 

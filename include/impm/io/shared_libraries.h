@@ -50,6 +50,17 @@ namespace impm
                     const std::vector<std::string> &overrides);
 
     /**
+     * @brief Check, once the scene is read into @p prm, that the entry
+     * holds what libraries_named() found in @p scene_file and
+     * @p overrides: a value set elsewhere (in a file the scene includes)
+     * came too late to be loaded, an InputError.
+     */
+    void
+    check_read(const dealii::ParameterHandler &prm,
+               const std::string              &scene_file,
+               const std::vector<std::string> &overrides);
+
+    /**
      * @brief The libraries named by the value @p value of the entry (a
      * comma-separated list), relative paths with a '/' resolved against
      * @p directory (none if empty).
