@@ -9,6 +9,7 @@
 #include <impm/core/default_scene.h>
 #include <impm/core/parameters.h>
 #include <impm/io/scene_input.h>
+#include <impm/io/shared_libraries.h>
 #include <impm/simulator/material_test.h>
 #include <impm/simulator/run.h>
 
@@ -47,14 +48,154 @@ namespace
     "                                  entry of the scene\n"
     "  --stop-after-step K             stop after K converged load steps\n"
     "                                  (no summary.json is written)\n"
+    "  --quiet                         print only errors and the run's\n"
+    "                                  final summary (Output/Quiet)\n"
     "  --verbose                       on an error, print deal.II's full\n"
     "                                  report (source file, condition)\n"
     "                                  after the one-line message\n"
     "  --print-parameters              print every parameter with its\n"
-    "                                  default and documentation, and exit\n"
+    "                                  default and documentation (with the\n"
+    "                                  plugins of the scene's Additional\n"
+    "                                  shared libraries), and exit\n"
     "  --help                          print this text and exit\n"
     "\n"
     "Run in parallel with: mpirun -np N impm SCENE.prm\n";
+
+
+
+  /** @brief What the command line asks for. */
+  struct CommandLine
+  {
+    /** The scene file; empty for the default scene. */
+    std::string scene_file;
+    /** The `--set` assignments (and --overwrite's, --quiet's), in order. */
+    std::vector<std::string> overrides;
+    /** How the scene is run. */
+    impm::RunOptions options;
+    /** --print-parameters. */
+    bool print_parameters = false;
+  };
+
+
+
+  /**
+   * @brief Read the command line (but --help, --verbose). A mistake is an
+   * InputError.
+   */
+  CommandLine
+  parse_command_line(const int argc, char **argv)
+  {
+    CommandLine command_line;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string argument = argv[i];
+        if (argument == "--verbose")
+          continue;
+        else if (argument == "--stop-after-step")
+          {
+            const std::string value = i + 1 < argc ? argv[++i] : "";
+            char             *end   = nullptr;
+            const long        steps = std::strtol(value.c_str(), &end, 10);
+            if (value.empty() || *end != '\0' || steps < 1 ||
+                steps > 1000000000)
+              throw impm::InputError("--stop-after-step '" + value +
+                                     "': expected a number of load steps "
+                                     "from 1 to 1e9.");
+            command_line.options.stop_after_step =
+              static_cast<unsigned int>(steps);
+          }
+        else if (argument == "--resume")
+          command_line.options.resume = true;
+        else if (argument == "--resume-with-changes")
+          command_line.options.resume =
+            command_line.options.resume_with_changes = true;
+        else if (argument == "--overwrite")
+          command_line.overrides.push_back("Existing output=overwrite");
+        else if (argument == "--quiet")
+          command_line.overrides.push_back("Output/Quiet=true");
+        else if (argument == "--print-parameters")
+          command_line.print_parameters = true;
+        else if (argument == "--set")
+          {
+            if (i + 1 >= argc)
+              throw impm::InputError("--set needs an argument "
+                                     "\"Subsection/Entry=value\".");
+            command_line.overrides.push_back(argv[++i]);
+          }
+        else if (argument.rfind("--", 0) == 0)
+          throw impm::InputError("Unknown option '" + argument +
+                                 "'; see impm --help.");
+        else if (command_line.scene_file.empty())
+          command_line.scene_file = argument;
+        else
+          throw impm::InputError("Only one scene file may be given; got '" +
+                                 command_line.scene_file + "' and '" +
+                                 argument + "'.");
+      }
+    return command_line;
+  }
+
+
+
+  /**
+   * @brief This process's rank as the MPI launcher announces it in the
+   * environment (Open MPI, MPICH, PMIx), before MPI is started; 0 without
+   * a launcher.
+   */
+  unsigned int
+  launcher_rank()
+  {
+    for (const char *name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+      if (const char *value = std::getenv(name))
+        return static_cast<unsigned int>(std::strtoul(value, nullptr, 10));
+    return 0;
+  }
+
+
+
+  /**
+   * @brief What needs no MPI: --help (anywhere on the command line) and
+   * --print-parameters (with the plugin libraries the scene names loaded).
+   * Started under mpirun, only the first process prints.
+   * @return The exit status.
+   */
+  int
+  run_without_mpi(const int argc, char **argv, const bool verbose)
+  {
+    const bool is_root = launcher_rank() == 0;
+    for (int i = 1; i < argc; ++i)
+      if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
+        {
+          if (is_root)
+            std::cout << usage;
+          return 0;
+        }
+    try
+      {
+        const CommandLine command_line = parse_command_line(argc, argv);
+        const std::string error        = impm::SharedLibraries::load(
+          impm::SharedLibraries::libraries_named(command_line.scene_file,
+                                                 command_line.overrides));
+        if (!error.empty())
+          throw impm::InputError(error);
+        dealii::ParameterHandler prm;
+        impm::declare_run_parameters(prm);
+        if (is_root)
+          prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
+        return 0;
+      }
+    catch (const std::exception &exception)
+      {
+        if (is_root)
+          {
+            std::cerr << "Error: " << impm::one_line_message(exception)
+                      << std::endl;
+            if (verbose)
+              std::cerr << exception.what() << std::endl;
+          }
+        return 1;
+      }
+  }
 
 } // namespace
 
@@ -69,86 +210,51 @@ main(int argc, char **argv)
   // shared file pointer; without 'sm' Open MPI takes a component whose locks
   // die with the process. A user's own choice (the variable set) is kept.
   setenv("OMPI_MCA_sharedfp", "^sm", 0);
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // Errors are reported by their message; a user needs no stack trace.
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
-  const unsigned int rank =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  const bool is_root = rank == 0;
   // A file-size limit (ulimit -f) makes a write fail with an error the
   // program reports, instead of killing it with SIGXFSZ.
   std::signal(SIGXFSZ, SIG_IGN);
-  bool verbose = false;
+  bool verbose = false, without_mpi = false;
   for (int i = 1; i < argc; ++i)
-    verbose = verbose || std::string(argv[i]) == "--verbose";
+    {
+      const std::string argument = argv[i];
+      verbose                    = verbose || argument == "--verbose";
+      without_mpi = without_mpi || argument == "--help" || argument == "-h" ||
+                    argument == "--print-parameters";
+    }
+  // Starting MPI takes longer than printing a text.
+  if (without_mpi)
+    return run_without_mpi(argc, argv, verbose);
+
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const unsigned int                       rank =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+  const bool is_root = rank == 0;
   try
     {
-      std::string              scene_file;
-      std::vector<std::string> overrides;
-      impm::RunOptions         options;
-      bool                     print_parameters = false;
-      for (int i = 1; i < argc; ++i)
-        {
-          const std::string argument = argv[i];
-          if (argument == "--help" || argument == "-h")
-            {
-              if (is_root)
-                std::cout << usage;
-              return 0;
-            }
-          else if (argument == "--verbose")
-            continue;
-          else if (argument == "--stop-after-step")
-            {
-              const std::string value = i + 1 < argc ? argv[++i] : "";
-              char             *end   = nullptr;
-              const long        steps = std::strtol(value.c_str(), &end, 10);
-              if (value.empty() || *end != '\0' || steps < 1 ||
-                  steps > 1000000000)
-                throw impm::InputError("--stop-after-step '" + value +
-                                       "': expected a number of load steps "
-                                       "from 1 to 1e9.");
-              options.stop_after_step = static_cast<unsigned int>(steps);
-            }
-          else if (argument == "--resume")
-            options.resume = true;
-          else if (argument == "--resume-with-changes")
-            options.resume = options.resume_with_changes = true;
-          else if (argument == "--overwrite")
-            overrides.push_back("Existing output=overwrite");
-          else if (argument == "--print-parameters")
-            print_parameters = true;
-          else if (argument == "--set")
-            {
-              if (i + 1 >= argc)
-                throw impm::InputError("--set needs an argument "
-                                       "\"Subsection/Entry=value\".");
-              overrides.push_back(argv[++i]);
-            }
-          else if (argument.rfind("--", 0) == 0)
-            throw impm::InputError("Unknown option '" + argument +
-                                   "'; see impm --help.");
-          else if (scene_file.empty())
-            scene_file = argument;
-          else
-            throw impm::InputError("Only one scene file may be given; got '" +
-                                   scene_file + "' and '" + argument + "'.");
-        }
+      CommandLine        command_line = parse_command_line(argc, argv);
+      const std::string &scene_file   = command_line.scene_file;
+      impm::RunOptions  &options      = command_line.options;
+      // The plugins' libraries are loaded on every process before the
+      // entries are declared: their names are the entries' choices.
+      impm::throw_if_any_failed(impm::SharedLibraries::load(
+                                  impm::SharedLibraries::libraries_named(
+                                    scene_file, command_line.overrides)),
+                                MPI_COMM_WORLD,
+                                false);
 
       dealii::ParameterHandler prm;
       impm::declare_run_parameters(prm);
-      if (print_parameters)
-        {
-          if (is_root)
-            prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
-          return 0;
-        }
       if (scene_file.empty())
         impm::SceneInput::parse_text(prm, impm::default_scene, "default scene");
       else
         impm::SceneInput::parse_file(prm, scene_file);
-      for (const auto &assignment : overrides)
+      for (const auto &assignment : command_line.overrides)
         impm::SceneInput::apply_override(prm, assignment);
+      impm::SharedLibraries::check_read(prm,
+                                        scene_file,
+                                        command_line.overrides);
       impm::SceneInput::check_numbers(prm);
       impm::SceneInput::resolve_paths(prm, scene_file);
 

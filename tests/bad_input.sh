@@ -221,6 +221,12 @@ expect unknown_option "Unknown option '--fast'; see impm --help" - -- "$base" --
 expect resume_without_checkpoint "--resume: the output directory 'results' holds no complete checkpoint" also_parallel -- "$base" --resume
 expect stop_after_zero_steps "--stop-after-step '0': expected a number of load steps from 1 to 1e9" - -- "$base" --stop-after-step 0
 expect two_scene_files "Only one scene file may be given" - -- "$base" "$base"
+expect missing_library "'Additional shared libraries': cannot load '/nonexistent/libplugin.so': /nonexistent/libplugin.so: cannot open shared object file" also_parallel -- "$base" --set "Additional shared libraries=/nonexistent/libplugin.so"
+plus library_in_scene.prm "set Additional shared libraries = no_such_folder/libplugin.so"
+expect library_in_scene "cannot load '$work/no_such_folder/libplugin.so'" - -- "$work/library_in_scene.prm"
+printf 'set Additional shared libraries = libplugin.so\n' > "$work/libraries.prm"
+plus library_included.prm "include $work/libraries.prm"
+expect library_included "'Additional shared libraries' = 'libplugin.so' is set where it is read too late \(in a file the scene includes\?\)" - -- "$work/library_included.prm"
 
 # Inertia.
 expect inertia_unstable_newmark "Inertia: Newmark gamma = 0.4 with beta = 0.25 is not unconditionally stable: it needs 0.5 <= gamma <= 4 beta" - -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Newmark gamma=0.4"

@@ -50,6 +50,14 @@ namespace impm
         "(scenes with several bodies only) and the state the scene's "
         "materials declare: plastic_multiplier (the plastic models). A name "
         "the scene's points do not store is an error.");
+      prm.declare_entry("Quiet",
+                        "false",
+                        Patterns::Bool(),
+                        "Print on the terminal only errors and the run's "
+                        "final summary (no description of the scene, no "
+                        "line per load step, no table of timings); the "
+                        "command-line flag --quiet sets this. The files "
+                        "are written as always.");
       prm.leave_subsection();
     }
 
@@ -64,6 +72,7 @@ namespace impm
         selection_index(analytical_solution_names,
                         "Output/Analytical solution",
                         prm.get("Analytical solution")));
+      quiet             = prm.get_bool("Quiet");
       const auto names  = Utilities::split_string_list(prm.get("Fields"));
       const auto wanted = [&names](const std::string &field) {
         for (const auto &name : names)

@@ -6,10 +6,13 @@
 #include <impm/postprocess/postprocessor.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <tuple>
 
 namespace impm
@@ -20,13 +23,104 @@ namespace impm
     using PointValues = std::pair<types::particle_index, std::vector<double>>;
 
     /**
+     * @brief A duration for a person: "0.4 ms", "52 ms", "3.52 s", "38 s",
+     * "12 min", "3.1 h".
+     */
+    std::string
+    format_duration(const double seconds)
+    {
+      char buffer[32];
+      if (seconds < 0.01)
+        std::snprintf(buffer, sizeof(buffer), "%.1f ms", 1e3 * seconds);
+      else if (seconds < 1.)
+        std::snprintf(buffer, sizeof(buffer), "%.0f ms", 1e3 * seconds);
+      else if (seconds < 10.)
+        std::snprintf(buffer, sizeof(buffer), "%.2f s", seconds);
+      else if (seconds < 120.)
+        std::snprintf(buffer, sizeof(buffer), "%.0f s", seconds);
+      else if (seconds < 7200.)
+        std::snprintf(buffer, sizeof(buffer), "%.0f min", seconds / 60.);
+      else
+        std::snprintf(buffer, sizeof(buffer), "%.1f h", seconds / 3600.);
+      return buffer;
+    }
+
+
+
+    /**
+     * @brief The wall time of each load-step attempt and an estimate of the
+     * time left: the progress still to go (of 0 to 1, StepRecord's
+     * target_progress) times the wall time per unit of progress over the
+     * last few attempts (a cut attempt adds its time and no progress, so
+     * cuts slow the estimate down as they slow the run).
+     */
+    class ProgressClock
+    {
+    public:
+      /** @brief Start the clock (the run's first attempt starts now). */
+      ProgressClock()
+        : last(std::chrono::steady_clock::now())
+      {}
+
+      /**
+       * @brief The text after an attempt's line: "  t 0.1200 s  24.0%
+       * step 0.81 s  left ~38 s" (the time only in a scene in time; no
+       * estimate before any progress, none after the last step).
+       */
+      std::string
+      after(const StepRecord &record)
+      {
+        const auto   now  = std::chrono::steady_clock::now();
+        const double wall = std::chrono::duration<double>(now - last).count();
+        last              = now;
+        const double reached =
+          record.converged() ? record.target_progress : record.start_progress;
+        recent.emplace_back(wall,
+                            record.converged() ?
+                              record.target_progress - record.start_progress :
+                              0.);
+        if (recent.size() > n_recent)
+          recent.pop_front();
+        double recent_wall = 0., recent_progress = 0.;
+        for (const auto &[seconds, progress] : recent)
+          {
+            recent_wall += seconds;
+            recent_progress += progress;
+          }
+        std::ostringstream text;
+        text << std::fixed;
+        if (record.end_time >= 0.)
+          text << "  t " << std::setprecision(4) << record.end_time << " s";
+        text << "  " << std::setprecision(1) << 100. * reached << "%"
+             << "  step " << format_duration(wall);
+        if (reached < 1. && recent_progress > 0.)
+          text << "  left ~"
+               << format_duration((1. - reached) * recent_wall /
+                                  recent_progress);
+        return text.str();
+      }
+
+    private:
+      /** The attempts the estimate averages over. */
+      static constexpr std::size_t n_recent = 5;
+      /** The end of the last attempt. */
+      std::chrono::steady_clock::time_point last;
+      /** Wall time and progress of the last attempts. */
+      std::deque<std::pair<double, double>> recent;
+    };
+
+    /**
      * @brief What a run prints on the terminal: a line per load-step attempt
      * as it happens or, in test mode ('Testing/Enabled'), the summary a test
      * compares, the same on any number of processes: the attempts' lines
      * (their forces and lengths in the summary's scales, see
      * StepRecord::log_line(const MeasureScales &)), the run's totals and
      * checks, the final state, and the points with the lowest ids and those
-     * nearest the probes.
+     * nearest the probes. Outside test mode each line ends with the progress
+     * (ProgressClock: the time reached, the share of the run done, the
+     * attempt's wall time and an estimate of the time left), and the run
+     * with one line of totals; with 'Output/Quiet' (--quiet) only that last
+     * line is printed. No wall time is ever part of the test summary.
      */
     template <int dim>
     class TerminalOutput : public Postprocessor<dim>
@@ -40,9 +134,14 @@ namespace impm
         if (context.testing.enabled)
           log_lines.push_back(record.log_line(scales(context)));
         else if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
-          std::cout << record.log_line() << "  residual " << std::scientific
-                    << std::setprecision(2) << record.newton.final_residual()
-                    << std::defaultfloat << std::endl;
+          {
+            const std::string progress = clock.after(record);
+            if (!context.output.quiet)
+              std::cout << record.log_line() << "  residual " << std::scientific
+                        << std::setprecision(2)
+                        << record.newton.final_residual() << std::defaultfloat
+                        << progress << std::endl;
+          }
       }
 
       void
@@ -50,7 +149,11 @@ namespace impm
              const RunStatistics<dim> &statistics) override
       {
         if (!context.testing.enabled)
-          return;
+          {
+            if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
+              print_totals(context, statistics);
+            return;
+          }
         const auto   points    = printed_points(context);
         const double deviation = context.output.analytical_solution ==
                                      Parameters::AnalyticalSolution::column ?
@@ -64,6 +167,26 @@ namespace impm
       }
 
     private:
+      /**
+       * @brief The run's last line outside test mode: "Finished 'column':
+       * 50 load steps (2 cuts), 102 Newton iterations, wall time 1.21 s
+       * (resumed runs included); files in output/".
+       */
+      static void
+      print_totals(const RunContext<dim>    &context,
+                   const RunStatistics<dim> &statistics)
+      {
+        std::cout << "Finished '" << context.parameters.scene.name
+                  << "': " << statistics.n_converged_steps << " load steps ("
+                  << statistics.n_cuts
+                  << (statistics.n_cuts == 1 ? " cut), " : " cuts), ")
+                  << statistics.total_newton_iterations
+                  << " Newton iterations, wall time "
+                  << format_duration(statistics.wall_time) << "; files in "
+                  << context.parameters.scene.output_directory << "/"
+                  << std::endl;
+      }
+
       /** The summary's scales: L and S L^(dim-1) of the scene's Testing
        *  subsection. */
       static MeasureScales
@@ -99,7 +222,10 @@ namespace impm
       print_points(const RunContext<dim>          &context,
                    const std::vector<PointValues> &points) const;
 
+      /** The test summary's lines per attempt. */
       std::vector<std::string> log_lines;
+      /** The attempts' wall times and the estimate of the time left. */
+      ProgressClock clock;
     };
 
 

@@ -98,7 +98,7 @@ namespace impm
     , communicator(communicator)
     , pcout(std::cout,
             Utilities::MPI::this_mpi_process(communicator) == 0 &&
-              !settings.testing.enabled)
+              !settings.testing.enabled && !settings.output.quiet)
     , root_out(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , grid(parameters.grid, communicator, checkpoint_grid)
@@ -232,9 +232,11 @@ namespace impm
     if (const std::string statistics = linear_solver->statistics();
         !statistics.empty())
       pcout << statistics << std::endl;
-    postprocessors->finish(wall_timer.wall_time());
+    // The table of timings before the postprocessors' summaries: the
+    // terminal's line of totals is the run's last.
     if (!settings.testing.enabled)
       timer.print_summary();
+    postprocessors->finish(wall_timer.wall_time());
   }
 
 
@@ -424,13 +426,15 @@ namespace impm
   MPMSolver<dim>::attempt_load_step(const LoadStepControl &control)
   {
     StepRecord record;
-    record.step_number  = control.step_number();
-    const StepSpan span = load_path.span(control.start(), control.target());
-    record.start        = span.start;
-    record.target       = span.target;
-    record.end_time     = load_path.in_time() ? span.end_time : -1.;
-    record.last         = control.target() >= 1.;
-    record.system_dofs  = system.n_dofs();
+    record.step_number     = control.step_number();
+    const StepSpan span    = load_path.span(control.start(), control.target());
+    record.start           = span.start;
+    record.target          = span.target;
+    record.start_progress  = control.start();
+    record.target_progress = control.target();
+    record.end_time        = load_path.in_time() ? span.end_time : -1.;
+    record.last            = control.target() >= 1.;
+    record.system_dofs     = system.n_dofs();
     problem.begin(material_points, span);
     record.newton = problem.is_explicit() ? problem.explicit_step() :
                                             newton_solver.solve(problem);

@@ -1,5 +1,6 @@
 // declare_run_parameters(): every module declares the entries it reads.
 #include <impm/coupling/coupling.h>
+#include <impm/io/shared_libraries.h>
 #include <impm/postprocess/postprocessor.h>
 #include <impm/simulator/material_test.h>
 #include <impm/simulator/run.h>
@@ -10,6 +11,7 @@ namespace impm
   void
   declare_run_parameters(dealii::ParameterHandler &prm)
   {
+    SharedLibraries::declare_parameters(prm);
     Parameters::declare_all(prm);
     Parameters::Solver::declare_parameters(prm);
     Parameters::Output::declare_parameters(prm);

@@ -12,6 +12,16 @@
 namespace impm
 {
   /**
+   * @brief The mistakes found while plugins registered (a name registered
+   * twice in one list), one line each. Registration runs in static
+   * initialisers, while the program starts or a plugin library is loaded,
+   * where an exception cannot be reported; the list is checked afterwards
+   * (SharedLibraries::check_registrations()).
+   */
+  std::vector<std::string> &
+  plugin_registration_errors();
+
+  /**
    * @brief A list of interchangeable plugins registered by name (ASPECT's
    * `PluginList` pattern), one list per interface: materials, force effects,
    * postprocessors.
@@ -45,7 +55,9 @@ namespace impm
 
     /**
      * @brief Register a plugin; returns true so that it can initialise a
-     * static variable. A second plugin of the same name is an error.
+     * static variable. A second plugin of the same name is not registered:
+     * the mistake is added to plugin_registration_errors() and the result
+     * is false.
      */
     static bool
     register_plugin(const Entry &entry)
@@ -53,8 +65,11 @@ namespace impm
       auto &list = storage();
       for (const Entry &other : list)
         if (other.name == entry.name)
-          throw std::logic_error("Two plugins are registered as '" +
-                                 entry.name + "'.");
+          {
+            plugin_registration_errors().push_back(
+              "two plugins are registered as '" + entry.name + "'");
+            return false;
+          }
       auto position = list.begin();
       while (position != list.end() && position->name < entry.name)
         ++position;

@@ -22,6 +22,10 @@ namespace impm
       PointFileFormat format;
       /** Compare with this analytical solution. */
       AnalyticalSolution analytical_solution;
+      /** Print only errors and the run's final summary on the terminal
+       *  (no description of the scene, no line per load step, no table of
+       *  timings): the entry `Quiet`, or the flag --quiet. */
+      bool quiet = false;
       /** @brief The fields written to the point files. */
       struct Fields
       {

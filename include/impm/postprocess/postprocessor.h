@@ -95,6 +95,10 @@ namespace impm
     unsigned int step_number = 0;
     /** Load factors at the start and at the target of the attempt. */
     double start = 0., target = 0.;
+    /** The run's progress (0 at its start, 1 at its end: the load factor
+     *  of a quasi-static scene, the time over the end time of one in time)
+     *  at the start and at the target of the attempt. */
+    double start_progress = 0., target_progress = 0.;
     /** The time at the step's end in s (-1 in a scene without time). */
     double end_time = -1.;
     /** Whether the step ends the run (its target is the end). */

@@ -167,7 +167,7 @@ namespace impm
     const Parameters::All<dim>                          &parameters;
     const std::vector<std::unique_ptr<ForceEffect<dim>>> force_effects;
     const MPI_Comm                                       communicator;
-    /** Progress (rank 0, not in test mode). */
+    /** Progress (rank 0, not in test mode, not with Output/Quiet). */
     ConditionalOStream pcout;
     /** Messages that test mode prints too (rank 0). */
     ConditionalOStream root_out;
