@@ -1,5 +1,6 @@
 // Inertia as a coupling: implicit Newmark time stepping in the previously
-// converged form, with the lumped mass of the start-of-step grid.
+// converged form, with the lumped or consistent mass of the start-of-step
+// grid.
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -10,6 +11,7 @@
 #include <impm/coupling/coupling.h>
 #include <impm/coupling/nodal_momentum.h>
 #include <impm/coupling/time_integrator.h>
+#include <impm/system/dense_block_adder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -323,11 +325,16 @@ namespace impm
         const double c  = (integrator.k_m() + integrator.mass_damping *
                                                integrator.gamma * time_step) *
                          c1;
+        const double diagonal =
+          integrator.consistent_mass ? integrator.mass_regularisation : 1.;
+        if (integrator.consistent_mass)
+          add_consistent_mass(c, system, matrix);
         for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
           {
             const auto row = system.system_index(i);
-            if (row != numbers::invalid_dof_index && nodes.mass(i) > 0.)
-              matrix.add(row, row, c * nodes.mass(i));
+            if (row != numbers::invalid_dof_index && nodes.mass(i) > 0. &&
+                diagonal > 0.)
+              matrix.add(row, row, diagonal * c * nodes.mass(i));
           }
         return true;
       }
@@ -348,6 +355,14 @@ namespace impm
         const double k_r = integrator.alpha_f / (1. - integrator.alpha_f);
         double       norm_squared = 0.;
         force_on_material         = Tensor<1, dim>();
+        // M times the increment: lumped, or the consistent matrix's
+        // product (through the points).
+        const std::vector<double> mass_times_increment =
+          integrator.consistent_mass ?
+            nodes.consistent_mass_times(*current_points,
+                                        current_system->point_steps,
+                                        increment) :
+            std::vector<double>();
         for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
           if (nodes.in_system(i))
             {
@@ -355,8 +370,12 @@ namespace impm
               const double q = nodes.mass_acceleration(i);
               // M a^{n+1}
               const double mass_times_acceleration =
-                c1 * nodes.mass(i) * increment.local_element(i) - c2 * p -
-                c3 * q;
+                c1 * (integrator.consistent_mass ?
+                        mass_times_increment[i] +
+                          integrator.mass_regularisation * nodes.mass(i) *
+                            increment.local_element(i) :
+                        nodes.mass(i) * increment.local_element(i)) -
+                c2 * p - c3 * q;
               double force =
                 integrator.k_m() * mass_times_acceleration + k_a * q;
               if (!start_residual.empty())
@@ -375,6 +394,50 @@ namespace impm
         inertial_force_norm = std::sqrt(
           Utilities::MPI::sum(norm_squared,
                               grid.get_triangulation().get_communicator()));
+      }
+
+      /**
+       * @brief @p c times the consistent mass matrix, @f$c \sum_p m_p
+       * N_{Ip} N_{Jp}@f$ per axis, one dense block per point on its
+       * nodes' rows of the system (those of other processes through the
+       * system's off-process rows).
+       */
+      void
+      add_consistent_mass(const double                    c,
+                          const LoadStepSystem<dim>      &system,
+                          TrilinosWrappers::SparseMatrix &matrix)
+      {
+        const auto &steps = system.point_steps;
+        std::vector<std::pair<types::global_dof_index, unsigned int>> rows;
+        std::vector<types::global_dof_index>                          indices;
+        for (const auto &point : current_points->particles())
+          {
+            const PointStep<dim> &step = steps.of(point);
+            const double m = PointState<dim>(point.get_properties()).mass();
+            rows.clear();
+            for (unsigned int k = 0; k < step.support.n_nodes * dim; ++k)
+              {
+                const auto row = system.system_index(step.dofs[k]);
+                if (row != numbers::invalid_dof_index)
+                  rows.emplace_back(row, k);
+              }
+            std::sort(rows.begin(), rows.end());
+            indices.resize(rows.size());
+            for (unsigned int a = 0; a < rows.size(); ++a)
+              indices[a] = rows[a].first;
+            block_adder.add(
+              indices.data(),
+              indices.size(),
+              [&](const unsigned int a, const unsigned int b) {
+                const unsigned int k = rows[a].second, l = rows[b].second;
+                return k % dim != l % dim ?
+                         0. :
+                         c * m * step.support.weights[k / dim] *
+                           step.support.weights[l / dim];
+              },
+              matrix,
+              system.off_process_rows);
+          }
       }
 
       double
@@ -407,11 +470,27 @@ namespace impm
             // (owned and ghost DoFs: the points read both).
             std::vector<double> new_acceleration(n_local()),
               new_velocity(n_local()), velocity_change(n_local());
+            // The start's nodal velocity and acceleration: the momentum
+            // over the mass, lumped or consistent.
+            std::vector<double> start_velocity, start_acceleration;
+            if (integrator.consistent_mass)
+              nodes.consistent_velocity_and_acceleration(
+                material_points,
+                steps,
+                integrator.mass_regularisation,
+                start_velocity,
+                start_acceleration);
             for (unsigned int i = 0; i < n_local(); ++i)
               {
                 const double m = nodes.mass(i);
-                const double v = m > 0. ? nodes.momentum(i) / m : 0.;
-                const double a = m > 0. ? nodes.mass_acceleration(i) / m : 0.;
+                const double v = integrator.consistent_mass ?
+                                   start_velocity[i] :
+                                 m > 0. ? nodes.momentum(i) / m :
+                                          0.;
+                const double a = integrator.consistent_mass ?
+                                   start_acceleration[i] :
+                                 m > 0. ? nodes.mass_acceleration(i) / m :
+                                          0.;
                 new_acceleration[i] =
                   (increment.local_element(i) - time_step * v) /
                     (integrator.beta * time_step * time_step) -
@@ -529,6 +608,8 @@ namespace impm
       std::vector<double> point_velocities, point_accelerations;
       /** The nodes' mass and momentum of the step's start. */
       NodalMomentum<dim> nodes;
+      /** The scratch of the consistent mass matrix's point blocks. */
+      DenseBlockAdder block_adder;
       /** The residual of the step's start on the local DoFs (empty
        *  unless generalised-alpha). */
       std::vector<double> start_residual;

@@ -1,5 +1,11 @@
+#include <deal.II/base/mpi.h>
+
+#include <impm/base/errors.h>
 #include <impm/core/point_properties.h>
 #include <impm/coupling/nodal_momentum.h>
+
+#include <cmath>
+#include <string>
 
 namespace impm
 {
@@ -128,6 +134,159 @@ namespace impm
       if (in_system_dof[i] && mass(i) > 0.)
         velocity[i] = updated_momentum.local_element(i) / mass(i);
     return velocity;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  NodalMomentum<dim>::at_points(const MaterialPoints<dim> &material_points,
+                                const PointSteps<dim>     &steps,
+                                const NodalVector         &x) const
+  {
+    std::vector<double> values(steps.size() * dim, 0.);
+    for (const auto &point : material_points.particles())
+      {
+        const unsigned int    p    = steps.index_of(point);
+        const PointStep<dim> &step = steps[p];
+        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            values[p * dim + i] +=
+              step.support.weights[v] * x.local_element(step.dofs[v * dim + i]);
+      }
+    return values;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  NodalMomentum<dim>::consistent_mass_times(
+    const MaterialPoints<dim> &material_points,
+    const PointSteps<dim>     &steps,
+    const NodalVector         &x) const
+  {
+    const std::vector<double> x_at_points =
+      at_points(material_points, steps, x);
+    NodalVector product;
+    grid.reinit_vector(product);
+    for (const auto &point : material_points.particles())
+      {
+        const unsigned int    p    = steps.index_of(point);
+        const PointStep<dim> &step = steps[p];
+        const double m = PointState<dim>(point.get_properties()).mass();
+        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            product.local_element(step.dofs[v * dim + i]) +=
+              step.support.weights[v] * m * x_at_points[p * dim + i];
+      }
+    product.compress(VectorOperation::add);
+    product.update_ghost_values();
+    std::vector<double> result(n_local());
+    for (unsigned int i = 0; i < n_local(); ++i)
+      result[i] = product.local_element(i);
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  NodalMomentum<dim>::solve_consistent_mass(
+    const MaterialPoints<dim> &material_points,
+    const PointSteps<dim>     &steps,
+    const double               regularisation,
+    const NodalVector         &right_hand_side) const
+  {
+    const MPI_Comm communicator = grid.get_triangulation().get_communicator();
+    const unsigned int n_owned  = nodal_mass.locally_owned_size();
+    const auto         active   = [&](const unsigned int i) {
+      return in_system_dof[i] && mass(i) > 0.;
+    };
+    const auto dot = [&](const std::vector<double> &a,
+                         const std::vector<double> &b) {
+      double sum = 0.;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        sum += a[i] * b[i];
+      return Utilities::MPI::sum(sum, communicator);
+    };
+    std::vector<double> x(n_owned, 0.), r(n_owned, 0.), z(n_owned, 0.),
+      product(n_owned, 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (active(i))
+        r[i] = right_hand_side.local_element(i);
+    const double norm = std::sqrt(dot(r, r));
+    NodalVector  direction;
+    grid.reinit_vector(direction);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (active(i))
+        z[i] = r[i] / ((1. + regularisation) * mass(i));
+    double       rz        = dot(r, z);
+    unsigned int iteration = 0;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      direction.local_element(i) = z[i];
+    while (norm > 0. && std::sqrt(dot(r, r)) > 1e-12 * norm)
+      {
+        if (++iteration > 1000)
+          throw CollectiveError(
+            "Inertia: the consistent mass's conjugate gradients did not "
+            "reach 1e-12 of the right-hand side in 1000 iterations "
+            "(residual " +
+            std::to_string(std::sqrt(dot(r, r)) / norm) +
+            "); raise 'Inertia/Mass regularisation'.");
+        direction.update_ghost_values();
+        const std::vector<double> mass_times_direction =
+          consistent_mass_times(material_points, steps, direction);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          product[i] =
+            active(i) ? mass_times_direction[i] + regularisation * mass(i) *
+                                                    direction.local_element(i) :
+                        0.;
+        std::vector<double> d(n_owned);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          d[i] = direction.local_element(i);
+        const double alpha = rz / dot(d, product);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            x[i] += alpha * d[i];
+            r[i] -= alpha * product[i];
+            z[i] = active(i) ? r[i] / ((1. + regularisation) * mass(i)) : 0.;
+          }
+        const double rz_new = dot(r, z);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          direction.local_element(i) = z[i] + rz_new / rz * d[i];
+        rz = rz_new;
+      }
+    NodalVector solution;
+    grid.reinit_vector(solution);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      solution.local_element(i) = x[i];
+    solution.update_ghost_values();
+    std::vector<double> result(n_local());
+    for (unsigned int i = 0; i < n_local(); ++i)
+      result[i] = solution.local_element(i);
+    return result;
+  }
+
+
+
+  template <int dim>
+  void
+  NodalMomentum<dim>::consistent_velocity_and_acceleration(
+    const MaterialPoints<dim> &material_points,
+    const PointSteps<dim>     &steps,
+    const double               regularisation,
+    std::vector<double>       &velocity,
+    std::vector<double>       &acceleration) const
+  {
+    velocity     = solve_consistent_mass(material_points,
+                                     steps,
+                                     regularisation,
+                                     nodal_momentum);
+    acceleration = solve_consistent_mass(material_points,
+                                         steps,
+                                         regularisation,
+                                         nodal_mass_acceleration);
   }
 
 

@@ -4,7 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
-#include <impm/assembly/dense_block_adder.h>
+#include <impm/system/dense_block_adder.h>
 #include <impm/core/parameters.h>
 #include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>

@@ -113,7 +113,53 @@ namespace impm
                       const PointSteps<dim>     &steps,
                       const std::vector<double> &velocities) const;
 
+    /**
+     * @brief The consistent mass matrix times @p x (ghosted local DoFs):
+     * @f$(M x)_I = \sum_p N_{Ip}\, m_p \sum_J N_{Jp} x_J@f$ on the local
+     * DoFs, owned and ghost, summed over the processes. Collective.
+     */
+    std::vector<double>
+    consistent_mass_times(const MaterialPoints<dim> &material_points,
+                          const PointSteps<dim>     &steps,
+                          const NodalVector         &x) const;
+
+    /**
+     * @brief The value at each point of the nodal field @p x (ghosted
+     * local DoFs): @f$x_p = \sum_I N_{Ip} x_I@f$, by step index and axis.
+     */
+    std::vector<double>
+    at_points(const MaterialPoints<dim> &material_points,
+              const PointSteps<dim>     &steps,
+              const NodalVector         &x) const;
+
+    /**
+     * @brief The nodes' velocity and acceleration of the consistent mass:
+     * @f$M v = p@f$ and @f$M a = q@f$ with @f$M = M_c + \epsilon M_L@f$
+     * (the consistent matrix, plus @p regularisation times the lumped
+     * one, which keeps M definite where few points share a node), on the
+     * system's DoFs (zero elsewhere), by conjugate gradients
+     * preconditioned with the lumped mass, to 1e-12 of the right-hand
+     * side. A solve that does not converge is an error. Collective.
+     * @param[out] velocity, acceleration On the local DoFs (owned and
+     *   ghosts).
+     */
+    void
+    consistent_velocity_and_acceleration(
+      const MaterialPoints<dim> &material_points,
+      const PointSteps<dim>     &steps,
+      const double               regularisation,
+      std::vector<double>       &velocity,
+      std::vector<double>       &acceleration) const;
+
   private:
+    /** @brief Solve @f$(M_c + \epsilon M_L) x = b@f$ (see
+     *  consistent_velocity_and_acceleration()). */
+    std::vector<double>
+    solve_consistent_mass(const MaterialPoints<dim> &material_points,
+                          const PointSteps<dim>     &steps,
+                          const double               regularisation,
+                          const NodalVector         &right_hand_side) const;
+
     const BackgroundGrid<dim> &grid;
     NodalVector       nodal_mass, nodal_momentum, nodal_mass_acceleration;
     std::vector<bool> in_system_dof;

@@ -81,6 +81,10 @@ namespace impm
     double beta, gamma;
     /** The mass-proportional damping coefficient (1/s). */
     double mass_damping;
+    /** Whether the implicit mass is the consistent matrix. */
+    bool consistent_mass;
+    /** The fraction of the lumped mass added to the consistent one. */
+    double mass_regularisation;
   };
 } // namespace impm
 

@@ -1,5 +1,5 @@
-#ifndef impm_assembly_dense_block_adder_h
-#define impm_assembly_dense_block_adder_h
+#ifndef impm_system_dense_block_adder_h
+#define impm_system_dense_block_adder_h
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/types.h>
