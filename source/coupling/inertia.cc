@@ -11,7 +11,6 @@
 #include <impm/coupling/coupling.h>
 #include <impm/coupling/nodal_momentum.h>
 #include <impm/coupling/time_integrator.h>
-#include <impm/system/dense_block_adder.h>
 
 #include <algorithm>
 #include <cmath>
@@ -328,7 +327,7 @@ namespace impm
         const double diagonal =
           integrator.consistent_mass ? integrator.mass_regularisation : 1.;
         if (integrator.consistent_mass)
-          add_consistent_mass(c, system, matrix);
+          nodes.add_consistent_mass(c, *current_points, system, matrix);
         for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
           {
             const auto row = system.system_index(i);
@@ -394,50 +393,6 @@ namespace impm
         inertial_force_norm = std::sqrt(
           Utilities::MPI::sum(norm_squared,
                               grid.get_triangulation().get_communicator()));
-      }
-
-      /**
-       * @brief @p c times the consistent mass matrix, @f$c \sum_p m_p
-       * N_{Ip} N_{Jp}@f$ per axis, one dense block per point on its
-       * nodes' rows of the system (those of other processes through the
-       * system's off-process rows).
-       */
-      void
-      add_consistent_mass(const double                    c,
-                          const LoadStepSystem<dim>      &system,
-                          TrilinosWrappers::SparseMatrix &matrix)
-      {
-        const auto &steps = system.point_steps;
-        std::vector<std::pair<types::global_dof_index, unsigned int>> rows;
-        std::vector<types::global_dof_index>                          indices;
-        for (const auto &point : current_points->particles())
-          {
-            const PointStep<dim> &step = steps.of(point);
-            const double m = PointState<dim>(point.get_properties()).mass();
-            rows.clear();
-            for (unsigned int k = 0; k < step.support.n_nodes * dim; ++k)
-              {
-                const auto row = system.system_index(step.dofs[k]);
-                if (row != numbers::invalid_dof_index)
-                  rows.emplace_back(row, k);
-              }
-            std::sort(rows.begin(), rows.end());
-            indices.resize(rows.size());
-            for (unsigned int a = 0; a < rows.size(); ++a)
-              indices[a] = rows[a].first;
-            block_adder.add(
-              indices.data(),
-              indices.size(),
-              [&](const unsigned int a, const unsigned int b) {
-                const unsigned int k = rows[a].second, l = rows[b].second;
-                return k % dim != l % dim ?
-                         0. :
-                         c * m * step.support.weights[k / dim] *
-                           step.support.weights[l / dim];
-              },
-              matrix,
-              system.off_process_rows);
-          }
       }
 
       double
@@ -608,8 +563,6 @@ namespace impm
       std::vector<double> point_velocities, point_accelerations;
       /** The nodes' mass and momentum of the step's start. */
       NodalMomentum<dim> nodes;
-      /** The scratch of the consistent mass matrix's point blocks. */
-      DenseBlockAdder block_adder;
       /** The residual of the step's start on the local DoFs (empty
        *  unless generalised-alpha). */
       std::vector<double> start_residual;

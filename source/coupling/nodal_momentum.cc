@@ -4,8 +4,11 @@
 #include <impm/core/point_properties.h>
 #include <impm/coupling/nodal_momentum.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace impm
 {
@@ -287,6 +290,48 @@ namespace impm
                                          steps,
                                          regularisation,
                                          nodal_mass_acceleration);
+  }
+
+
+
+  template <int dim>
+  void
+  NodalMomentum<dim>::add_consistent_mass(
+    const double                    c,
+    const MaterialPoints<dim>      &material_points,
+    const LoadStepSystem<dim>      &system,
+    TrilinosWrappers::SparseMatrix &matrix)
+  {
+    const auto &steps = system.point_steps;
+    std::vector<std::pair<types::global_dof_index, unsigned int>> rows;
+    std::vector<types::global_dof_index>                          indices;
+    for (const auto &point : material_points.particles())
+      {
+        const PointStep<dim> &step = steps.of(point);
+        const double m = PointState<dim>(point.get_properties()).mass();
+        rows.clear();
+        for (unsigned int k = 0; k < step.support.n_nodes * dim; ++k)
+          {
+            const auto row = system.system_index(step.dofs[k]);
+            if (row != numbers::invalid_dof_index)
+              rows.emplace_back(row, k);
+          }
+        std::sort(rows.begin(), rows.end());
+        indices.resize(rows.size());
+        for (unsigned int a = 0; a < rows.size(); ++a)
+          indices[a] = rows[a].first;
+        block_adder.add(
+          indices.data(),
+          indices.size(),
+          [&](const unsigned int a, const unsigned int b) {
+            const unsigned int k = rows[a].second, l = rows[b].second;
+            return k % dim != l % dim ? 0. :
+                                        c * m * step.support.weights[k / dim] *
+                                          step.support.weights[l / dim];
+          },
+          matrix,
+          system.off_process_rows);
+      }
   }
 
 

@@ -4,6 +4,7 @@
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
 #include <impm/points/point_step.h>
+#include <impm/system/dense_block_adder.h>
 #include <impm/system/load_step_system.h>
 
 #include <vector>
@@ -151,6 +152,18 @@ namespace impm
       std::vector<double>       &velocity,
       std::vector<double>       &acceleration) const;
 
+    /**
+     * @brief Add @p c times the consistent mass matrix, @f$c \sum_p m_p
+     * N_{Ip} N_{Jp}@f$ per axis, to @p matrix: one dense block per point
+     * on its nodes' rows of the system (those of other processes through
+     * the system's off-process rows).
+     */
+    void
+    add_consistent_mass(const double                    c,
+                        const MaterialPoints<dim>      &material_points,
+                        const LoadStepSystem<dim>      &system,
+                        TrilinosWrappers::SparseMatrix &matrix);
+
   private:
     /** @brief Solve @f$(M_c + \epsilon M_L) x = b@f$ (see
      *  consistent_velocity_and_acceleration()). */
@@ -161,6 +174,8 @@ namespace impm
                           const NodalVector         &right_hand_side) const;
 
     const BackgroundGrid<dim> &grid;
+    /** The scratch of the consistent mass matrix's point blocks. */
+    DenseBlockAdder   block_adder;
     NodalVector       nodal_mass, nodal_momentum, nodal_mass_acceleration;
     std::vector<bool> in_system_dof;
   };
