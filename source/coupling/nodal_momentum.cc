@@ -112,14 +112,14 @@ namespace impm
 
 
   template <int dim>
-  std::vector<double>
-  NodalMomentum<dim>::remapped_velocity(
+  NodalVector
+  NodalMomentum<dim>::mass_weighted_sum(
     const MaterialPoints<dim> &material_points,
     const PointSteps<dim>     &steps,
-    const std::vector<double> &velocities) const
+    const std::vector<double> &values) const
   {
-    NodalVector updated_momentum;
-    grid.reinit_vector(updated_momentum);
+    NodalVector sum;
+    grid.reinit_vector(sum);
     for (const auto &point : material_points.particles())
       {
         const unsigned int    p    = steps.index_of(point);
@@ -127,11 +127,25 @@ namespace impm
         const double m = PointState<dim>(point.get_properties()).mass();
         for (unsigned int v = 0; v < step.support.n_nodes; ++v)
           for (unsigned int i = 0; i < dim; ++i)
-            updated_momentum.local_element(step.dofs[v * dim + i]) +=
-              step.support.weights[v] * m * velocities[p * dim + i];
+            sum.local_element(step.dofs[v * dim + i]) +=
+              step.support.weights[v] * m * values[p * dim + i];
       }
-    updated_momentum.compress(VectorOperation::add);
-    updated_momentum.update_ghost_values();
+    sum.compress(VectorOperation::add);
+    sum.update_ghost_values();
+    return sum;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  NodalMomentum<dim>::remapped_velocity(
+    const MaterialPoints<dim> &material_points,
+    const PointSteps<dim>     &steps,
+    const std::vector<double> &velocities) const
+  {
+    const NodalVector updated_momentum =
+      mass_weighted_sum(material_points, steps, velocities);
     std::vector<double> velocity(n_local(), 0.);
     for (unsigned int i = 0; i < n_local(); ++i)
       if (in_system_dof[i] && mass(i) > 0.)
@@ -169,22 +183,10 @@ namespace impm
     const PointSteps<dim>     &steps,
     const NodalVector         &x) const
   {
-    const std::vector<double> x_at_points =
-      at_points(material_points, steps, x);
-    NodalVector product;
-    grid.reinit_vector(product);
-    for (const auto &point : material_points.particles())
-      {
-        const unsigned int    p    = steps.index_of(point);
-        const PointStep<dim> &step = steps[p];
-        const double m = PointState<dim>(point.get_properties()).mass();
-        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-          for (unsigned int i = 0; i < dim; ++i)
-            product.local_element(step.dofs[v * dim + i]) +=
-              step.support.weights[v] * m * x_at_points[p * dim + i];
-      }
-    product.compress(VectorOperation::add);
-    product.update_ghost_values();
+    const NodalVector product =
+      mass_weighted_sum(material_points,
+                        steps,
+                        at_points(material_points, steps, x));
     std::vector<double> result(n_local());
     for (unsigned int i = 0; i < n_local(); ++i)
       result[i] = product.local_element(i);

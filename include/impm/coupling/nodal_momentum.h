@@ -165,6 +165,16 @@ namespace impm
                         TrilinosWrappers::SparseMatrix &matrix);
 
   private:
+    /**
+     * @brief @f$\sum_p N_{Ip}\, m_p\, x_p@f$ of the point values @p values
+     * (by step index and axis) at the nodes, summed over the processes and
+     * ghosted. Collective.
+     */
+    NodalVector
+    mass_weighted_sum(const MaterialPoints<dim> &material_points,
+                      const PointSteps<dim>     &steps,
+                      const std::vector<double> &values) const;
+
     /** @brief Solve @f$(M_c + \epsilon M_L) x = b@f$ (see
      *  consistent_velocity_and_acceleration()). */
     std::vector<double>
