@@ -2,6 +2,7 @@
 // file, the first postprocessor that declares parameters of its own.
 #include <deal.II/base/mpi.h>
 
+#include <impm/base/errors.h>
 #include <impm/base/names.h>
 #include <impm/io/log_file.h>
 #include <impm/postprocess/postprocessor.h>
@@ -39,7 +40,26 @@ namespace impm
                                                "Point history",
                                                "Positions",
                                                dim))
-      {}
+        , region_lower(Parameters::get_point_list(context.prm,
+                                                  "Point history",
+                                                  "Region lower corner",
+                                                  dim))
+        , region_upper(Parameters::get_point_list(context.prm,
+                                                  "Point history",
+                                                  "Region upper corner",
+                                                  dim))
+      {
+        if (region_lower.size() > 1 || region_upper.size() > 1 ||
+            region_lower.size() != region_upper.size())
+          throw InputError(
+            "Point history: give 'Region lower corner' and 'Region upper "
+            "corner' together, one point each (or neither).");
+        for (unsigned int d = 0; d < dim && !region_lower.empty(); ++d)
+          if (!(region_lower[0][d] <= region_upper[0][d]))
+            throw InputError("Point history: 'Region lower corner' must lie "
+                             "below 'Region upper corner' in every "
+                             "coordinate.");
+      }
 
       /** @brief Declare `Positions` in the current subsection. */
       static void
@@ -54,13 +74,26 @@ namespace impm
           "through the run in point_history.csv: at the start and after "
           "each converged load step, their position, displacement, stress "
           "and declared fields. Empty: no history.");
+        prm.declare_entry("Region lower corner",
+                          "",
+                          Patterns::Anything(),
+                          "Follow also every point whose initial position "
+                          "lies in the box from this corner (x, y) to "
+                          "'Region upper corner', after the points of "
+                          "'Positions', by id (a large box makes a large "
+                          "file). Empty: no region.");
+        prm.declare_entry("Region upper corner",
+                          "",
+                          Patterns::Anything(),
+                          "The upper corner of that box.");
       }
 
       /** @brief Whether the entered subsection names positions. */
       static bool
       wanted(ParameterHandler &prm)
       {
-        return !prm.get("Positions").empty();
+        return !prm.get("Positions").empty() ||
+               !prm.get("Region lower corner").empty();
       }
 
       void
@@ -139,6 +172,27 @@ namespace impm
               Utilities::MPI::all_gather(context.communicator, best);
             ids.push_back(std::min_element(all.begin(), all.end())->second);
           }
+        if (region_lower.empty())
+          return;
+        // Every point that starts in the region, by id, on all processes.
+        std::vector<types::particle_index> local;
+        for (const auto &point : context.material_points.particles())
+          {
+            const auto X =
+              PointState<dim>(point.get_properties()).initial_position();
+            bool inside = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              inside = inside && X[d] >= region_lower[0][d] &&
+                       X[d] <= region_upper[0][d];
+            if (inside)
+              local.push_back(point.get_id());
+          }
+        std::vector<types::particle_index> in_region;
+        for (const auto &part :
+             Utilities::MPI::all_gather(context.communicator, local))
+          in_region.insert(in_region.end(), part.begin(), part.end());
+        std::sort(in_region.begin(), in_region.end());
+        ids.insert(ids.end(), in_region.begin(), in_region.end());
       }
 
       /** The header line. */
@@ -206,10 +260,22 @@ namespace impm
         std::vector<
           std::tuple<unsigned int, types::particle_index, std::vector<double>>>
           local;
+        // Each followed id with its numbers in the list (a point may be
+        // both nearest to a position and in the region), sorted by id.
+        std::vector<std::pair<types::particle_index, unsigned int>> numbers;
+        for (unsigned int k = 0; k < ids.size(); ++k)
+          numbers.emplace_back(ids[k], k);
+        std::sort(numbers.begin(), numbers.end());
         for (const auto &point : context.material_points.particles())
-          for (unsigned int k = 0; k < ids.size(); ++k)
-            if (point.get_id() == ids[k])
-              local.emplace_back(k, ids[k], values_of(context, point));
+          for (auto entry =
+                 std::lower_bound(numbers.begin(),
+                                  numbers.end(),
+                                  std::make_pair(point.get_id(), 0u));
+               entry != numbers.end() && entry->first == point.get_id();
+               ++entry)
+            local.emplace_back(entry->second,
+                               entry->first,
+                               values_of(context, point));
         const auto gathered =
           Utilities::MPI::gather(context.communicator, local, 0);
         if (!is_root(context))
@@ -237,7 +303,11 @@ namespace impm
 
       /** The initial positions named. */
       const std::vector<std::vector<double>> positions;
-      /** The ids of the points followed, one per position. */
+      /** The corners of the region whose points are followed (empty:
+       *  none). */
+      const std::vector<std::vector<double>> region_lower, region_upper;
+      /** The ids of the points followed: one per position, then those of
+       *  the region. */
       std::vector<types::particle_index> ids;
       /** point_history.csv (rank 0). */
       LogFile file;
