@@ -48,9 +48,7 @@ namespace impm
   central_difference_step(const NodalMomentum<dim>  &nodes,
                           const NodalVector         &r,
                           const double               time_step,
-                          const double               mass_damping,
-                          const ExplicitOrder        order,
-                          const double               flip_fraction,
+                          const TimeIntegrator      &integrator,
                           const MaterialPoints<dim> &material_points,
                           const PointSteps<dim>     &steps,
                           std::vector<double>       &increment,
@@ -66,20 +64,27 @@ namespace impm
         if (!nodes.in_system(i) || !(m > 0.))
           continue;
         const double v     = nodes.momentum(i) / m;
-        acceleration[i]    = (-r.local_element(i) - mass_damping * m * v) / m;
+        const double force = -r.local_element(i);
+        // Local non-viscous damping opposes the velocity with a fraction of
+        // the force's size (nothing on a node at rest).
+        const double local =
+          v > 0. ? -integrator.local_damping * std::abs(force) :
+          v < 0. ? integrator.local_damping * std::abs(force) :
+                   0.;
+        acceleration[i] = (force + local - integrator.mass_damping * m * v) / m;
         velocity_change[i] = time_step * acceleration[i];
         new_velocity[i]    = v + velocity_change[i];
       }
     nodes.update_points(material_points,
                         steps,
-                        flip_fraction,
+                        integrator.flip_fraction,
                         velocity_change,
                         new_velocity,
                         acceleration,
                         velocities,
                         accelerations);
     const std::vector<double> velocity =
-      order == ExplicitOrder::usl ?
+      integrator.explicit_order == ExplicitOrder::usl ?
         new_velocity :
         nodes.remapped_velocity(material_points, steps, velocities);
     increment.assign(n_local, 0.);
@@ -109,9 +114,7 @@ namespace impm
   central_difference_step(const NodalMomentum<2> &,
                           const NodalVector &,
                           const double,
-                          const double,
-                          const ExplicitOrder,
-                          const double,
+                          const TimeIntegrator &,
                           const MaterialPoints<2> &,
                           const PointSteps<2> &,
                           std::vector<double> &,
@@ -121,9 +124,7 @@ namespace impm
   central_difference_step(const NodalMomentum<3> &,
                           const NodalVector &,
                           const double,
-                          const double,
-                          const ExplicitOrder,
-                          const double,
+                          const TimeIntegrator &,
                           const MaterialPoints<3> &,
                           const PointSteps<3> &,
                           std::vector<double> &,

@@ -55,6 +55,16 @@ namespace impm
                       "frequency, from 0 (the most damping of the "
                       "highest frequencies) to 1 (none: the "
                       "trapezoidal rule's energy conservation).");
+    prm.declare_entry("Local damping",
+                      "0",
+                      Patterns::Double(0., 1.),
+                      "Explicit integrators: local non-viscous damping "
+                      "(Cundall's, for dynamic relaxation to a static "
+                      "state): each node's force reduced by this fraction "
+                      "of its size against the node's velocity, -alpha "
+                      "|f| sign(v); from 0 (none) to below 1. It damps "
+                      "every frequency alike and leaves the static state "
+                      "unchanged.");
     prm.declare_entry("Mass",
                       "lumped",
                       Patterns::Selection("lumped|consistent"),
@@ -101,6 +111,7 @@ namespace impm
     generalised_alpha      = name == "generalised-alpha";
     spectral_radius        = prm.get_double("Spectral radius");
     mass_damping           = prm.get_double("Mass damping");
+    local_damping          = prm.get_double("Local damping");
     consistent_mass        = prm.get("Mass") == "consistent";
     mass_regularisation    = prm.get_double("Mass regularisation");
     if (generalised_alpha)
@@ -120,6 +131,16 @@ namespace impm
       throw InputError(
         "Parameter 'Inertia/Courant number' = " + prm.get("Courant number") +
         " is not allowed: it must be above 0.");
+    if (local_damping >= 1.)
+      throw InputError(
+        "Parameter 'Inertia/Local damping' = " + prm.get("Local damping") +
+        " is not allowed: it must be below 1 (1 would stop "
+        "every node).");
+    if (!is_explicit() && local_damping > 0.)
+      throw InputError("Inertia: 'Local damping' needs an explicit "
+                       "integrator: its force, -alpha |f| sign(v), has no "
+                       "derivative for Newton's method; use 'Mass damping' "
+                       "with Newmark or generalised-alpha.");
     if (is_explicit() && consistent_mass)
       throw InputError("Inertia: 'Mass' = 'consistent' needs an implicit "
                        "integrator (Newmark or generalised-alpha); the "
@@ -158,6 +179,8 @@ namespace impm
     out << (consistent_mass ? ", consistent mass" : ", lumped mass");
     if (mass_damping > 0.)
       out << ", mass damping " << mass_damping << " 1/s";
+    if (local_damping > 0.)
+      out << ", local damping " << local_damping;
     if (flip_fraction < 1.)
       out << ", FLIP fraction " << flip_fraction;
     return out.str();

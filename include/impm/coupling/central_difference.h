@@ -39,21 +39,21 @@ namespace impm
    * @brief One step of the central difference rule with the lumped mass
    * of @p nodes, from the residual of the step's start @p r (internal
    * minus external force, ghosted): the nodes' acceleration @f$a_I =
-   * (-r_I - \alpha_R M_I v_I)/M_I@f$ (mass damping @p mass_damping), their
+   * (f_I - \alpha_L |f_I| \mathrm{sign}(v_I) - \alpha_R M_I v_I)/M_I@f$
+   * with @f$f_I = -r_I@f$ (the integrator's local and mass damping), their
    * new velocity @f$v_I + \Delta t\, a_I@f$, the points' new velocity and
-   * acceleration (NodalMomentum::update_points() with @p flip_fraction)
-   * and the increment @f$\Delta t\,v_I@f$ with the nodes' new velocity
-   * (USL) or that of the updated points' momentum (MUSL), on the local
-   * DoFs of the system (zero elsewhere). Collective.
+   * acceleration (NodalMomentum::update_points() with the integrator's
+   * FLIP fraction) and the increment @f$\Delta t\,v_I@f$ with the nodes'
+   * new velocity (USL) or that of the updated points' momentum (MUSL, the
+   * integrator's order), on the local DoFs of the system (zero
+   * elsewhere). Collective.
    */
   template <int dim>
   void
   central_difference_step(const NodalMomentum<dim>  &nodes,
                           const NodalVector         &r,
                           const double               time_step,
-                          const double               mass_damping,
-                          const ExplicitOrder        order,
-                          const double               flip_fraction,
+                          const TimeIntegrator      &integrator,
                           const MaterialPoints<dim> &material_points,
                           const PointSteps<dim>     &steps,
                           std::vector<double>       &increment,

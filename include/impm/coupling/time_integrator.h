@@ -81,6 +81,8 @@ namespace impm
     double beta, gamma;
     /** The mass-proportional damping coefficient (1/s). */
     double mass_damping;
+    /** Local non-viscous damping's fraction (explicit only). */
+    double local_damping;
     /** Whether the implicit mass is the consistent matrix. */
     bool consistent_mass;
     /** The fraction of the lumped mass added to the consistent one. */
