@@ -318,8 +318,10 @@ namespace impm
           fs::remove_all(entry.path());
     });
 
-    const bool                 testing = settings.testing.enabled;
-    dealii::ConditionalOStream out(std::cout, root);
+    const bool testing = settings.testing.enabled;
+    // --quiet: the result line only.
+    dealii::ConditionalOStream out(std::cout, root && !settings.output.quiet);
+    dealii::ConditionalOStream result_out(std::cout, root);
     out << "Strength reduction of scene '" << scene.name << "' (" << dim
         << "D): c/F and tan(phi)/F, trials until one stands and one fails, "
         << "then bisection to a bracket of " << search.tolerance << std::endl;
@@ -418,13 +420,14 @@ namespace impm
       fs::create_directory_symlink(trials[first_failed].directory,
                                    directory + "/first_failed");
     });
-    out << "Factor of safety: F = " << fixed(0.5 * (stands_at + fails_at), 4)
-        << " (stands at F = " << fixed(stands_at, 4)
-        << ", fails at F = " << fixed(fails_at, 4) << "; " << trials.size()
-        << " trials";
+    result_out << "Factor of safety: F = "
+               << fixed(0.5 * (stands_at + fails_at), 4)
+               << " (stands at F = " << fixed(stands_at, 4)
+               << ", fails at F = " << fixed(fails_at, 4) << "; "
+               << trials.size() << " trials";
     if (!testing)
-      out << ", " << fixed(total.wall_time(), 1) << " s";
-    out << ")" << std::endl;
+      result_out << ", " << fixed(total.wall_time(), 1) << " s";
+    result_out << ")" << std::endl;
   }
 
 
