@@ -17,7 +17,9 @@
 #     (not the search);
 #  5. a trial that fails on a load step (strength_reduction_slope.prm at
 #     F = 2.5 without a displacement limit): its point files end with its
-#     last converged step, though that is no output step.
+#     last converged step, though that is no output step;
+#  6. the block in 3D (a cube on rollers under a traction on z+, uniaxial
+#     stress): its bracket holds 1.25 too.
 # Usage: strength_reduction.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
 source "$(dirname "$0")/script_helpers.sh" "$@"
 scene=$2/strength_reduction_block.prm
@@ -81,6 +83,15 @@ grep -q "fails (left the grid)" log.txt || fail "no trial failed by leaving the 
 read -r low high < <(bracket no_limit)
 /usr/bin/python3 -c "import sys; sys.exit(not float(sys.argv[1]) > 1.5)" "$low" ||
   fail "without a displacement limit the block stood only up to $low"
+
+# 6. The block in 3D.
+run --set "Dimension=3" --set "Gravity/Acceleration=0, 0, -10" \
+  --set "Grid/Lower corner=0, 0, 0" --set "Grid/Upper corner=2, 2, 1.5" \
+  --set "Grid/Number of cells=4, 4, 3" --set "Grid/Condition y-=roller" \
+  --set "Grid/Condition z-=roller" --set "Body 1/Lower corner=0, 0, 0" \
+  --set "Body 1/Upper corner=1, 1, 1" --set "Traction/Boundary=z+" \
+  --set "Traction/Traction=0, 0, -16000" --set "Output directory=in_3d"
+holds in_3d 1.25 0.01
 
 # 5. A load step that cannot be solved.
 scene=$2/strength_reduction_slope.prm
