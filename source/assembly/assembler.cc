@@ -1,10 +1,10 @@
 #include <deal.II/base/mpi.h>
 
 #include <impm/assembly/assembler.h>
-#include <impm/system/dense_block_adder.h>
 #include <impm/mechanics/equilibrium_forms.h>
 #include <impm/mechanics/point_stiffness.h>
 #include <impm/mechanics/pulled_back_stress.h>
+#include <impm/system/dense_block_adder.h>
 
 #include <algorithm>
 #include <memory>

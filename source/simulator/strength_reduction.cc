@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -261,12 +262,10 @@ namespace impm
 
   template <int dim>
   void
-  StrengthReduction<dim>::run(dealii::ParameterHandler &prm,
-                              const RunOptions         &options,
-                              const MPI_Comm            communicator)
+  StrengthReduction<dim>::check_scene(dealii::ParameterHandler &prm,
+                                      const RunOptions         &options,
+                                      const RunParameters<dim> &settings)
   {
-    Parameters::StrengthReduction search;
-    search.parse_parameters(prm);
     if (options.resume)
       throw InputError("A strength reduction cannot be resumed: its trials "
                        "are whole runs of the scene (run it again).");
@@ -280,13 +279,9 @@ namespace impm
       throw InputError("'Strength reduction/Enabled' = 'true' needs a "
                        "quasi-static scene: its failure criterion is a load "
                        "step without equilibrium; disable 'Inertia/Enabled'.");
-
-    RunParameters<dim> settings;
-    settings.parse_parameters(prm);
-    const Parameters::Scene &scene = settings.scene.scene;
-    SceneChecks::check(settings.scene, communicator);
-    // Every body's material must say how it weakens, before any trial,
-    // and one at least must weaken.
+    // Every body's material must say how it weakens (a model that does not
+    // throws here), and one at least must weaken: an elastic model comes
+    // back unchanged, description and all.
     bool weakens = false;
     for (const auto &body : settings.scene.bodies)
       weakens =
@@ -296,8 +291,18 @@ namespace impm
       throw InputError("Strength reduction: no body's material has a "
                        "strength to reduce (the bodies are elastic), so no "
                        "trial could fail.");
+  }
 
-    const std::string directory = scene.output_directory;
+
+
+  template <int dim>
+  void
+  StrengthReduction<dim>::prepare_directory(const std::string        &directory,
+                                            const RunParameters<dim> &settings,
+                                            const RunOptions         &options,
+                                            const MPI_Comm communicator)
+  {
+    const Parameters::Scene &scene = settings.scene.scene;
     OutputDirectory::prepare(directory,
                              scene.name,
                              options.scene_file,
@@ -305,107 +310,145 @@ namespace impm
                                OutputDirectory::ExistingRun::overwrite :
                                OutputDirectory::ExistingRun::refuse,
                              communicator);
-    const bool root = Utilities::MPI::this_mpi_process(communicator) == 0;
-    // The trials of an earlier search of this scene go.
     run_collectively(communicator, [&]() {
-      if (!root)
+      if (Utilities::MPI::this_mpi_process(communicator) != 0)
         return;
       namespace fs = std::filesystem;
       static const std::regex trial_name(
         R"(^(trial_\d+|last_stable|first_failed)$)");
+      // Listed first, removed after: the directory is not changed while
+      // it is read.
+      std::vector<fs::path> earlier;
       for (const auto &entry : fs::directory_iterator(directory))
         if (std::regex_match(entry.path().filename().string(), trial_name))
-          fs::remove_all(entry.path());
+          earlier.push_back(entry.path());
+      for (const auto &path : earlier)
+        fs::remove_all(path);
     });
+  }
 
+
+
+  template <int dim>
+  void
+  StrengthReduction<dim>::write_table(const std::vector<Trial> &trials,
+                                      const std::string        &directory,
+                                      const MPI_Comm            communicator)
+  {
+    run_collectively(communicator, [&]() {
+      if (Utilities::MPI::this_mpi_process(communicator) != 0)
+        return;
+      std::ostringstream table;
+      table << "trial,factor,stands,failure,load_factor,converged_steps,"
+               "largest_displacement,wall_time,directory\n";
+      for (std::size_t k = 0; k < trials.size(); ++k)
+        table << k + 1 << ',' << fixed(trials[k].factor, 8) << ','
+              << (trials[k].stands ? 1 : 0) << ',' << trials[k].failure << ','
+              << fixed(trials[k].load_factor, 8) << ','
+              << trials[k].converged_steps << ','
+              << trials[k].largest_displacement << ','
+              << fixed(trials[k].wall_time, 3) << ',' << trials[k].directory
+              << '\n';
+      write_file_atomically(directory + "/factor_of_safety.csv", table.str());
+    });
+  }
+
+
+
+  template <int dim>
+  std::string
+  StrengthReduction<dim>::describe(const Trial       &trial,
+                                   const unsigned int number,
+                                   const bool         testing)
+  {
+    std::ostringstream line;
+    line << "trial " << std::setw(2) << number
+         << ": F = " << fixed(trial.factor, 6)
+         << (trial.stands ? "  stands" : "  fails (" + trial.failure + ")")
+         << "  (load " << fixed(trial.load_factor, 4) << ", "
+         << trial.converged_steps << " steps, largest displacement "
+         << std::setprecision(4) << trial.largest_displacement << " m)";
+    if (!testing)
+      line << "  " << fixed(trial.wall_time, 1) << " s";
+    return line.str();
+  }
+
+
+
+  template <int dim>
+  void
+  StrengthReduction<dim>::run(dealii::ParameterHandler &prm,
+                              const RunOptions         &options,
+                              const MPI_Comm            communicator)
+  {
+    Parameters::StrengthReduction search;
+    search.parse_parameters(prm);
+    RunParameters<dim> settings;
+    settings.parse_parameters(prm);
+    SceneChecks::check(settings.scene, communicator);
+    check_scene(prm, options, settings);
+    const std::string directory = settings.scene.scene.output_directory;
+    prepare_directory(directory, settings, options, communicator);
+
+    const bool root    = Utilities::MPI::this_mpi_process(communicator) == 0;
     const bool testing = settings.testing.enabled;
     // --quiet: the result line only.
     dealii::ConditionalOStream out(std::cout, root && !settings.output.quiet);
     dealii::ConditionalOStream result_out(std::cout, root);
-    out << "Strength reduction of scene '" << scene.name << "' (" << dim
+    out << "Strength reduction of scene '" << settings.scene.scene.name << "' ("
+        << dim
         << "D): c/F and tan(phi)/F, trials until one stands and one fails, "
         << "then bisection to a bracket of " << search.tolerance << std::endl;
 
-    std::vector<Trial> trials;
-    double             stands_at = -1., fails_at = -1.;
-    std::size_t        last_stable = 0, first_failed = 0;
-    dealii::Timer      total(communicator);
-    total.start();
-    const auto write_table = [&]() {
-      run_collectively(communicator, [&]() {
-        if (!root)
-          return;
-        std::ostringstream table;
-        table << "trial,factor,stands,failure,load_factor,converged_steps,"
-                 "largest_displacement,wall_time,directory\n";
-        for (std::size_t k = 0; k < trials.size(); ++k)
-          table << k + 1 << ',' << fixed(trials[k].factor, 8) << ','
-                << (trials[k].stands ? 1 : 0) << ',' << trials[k].failure << ','
-                << fixed(trials[k].load_factor, 8) << ','
-                << trials[k].converged_steps << ','
-                << trials[k].largest_displacement << ','
-                << fixed(trials[k].wall_time, 3) << ',' << trials[k].directory
-                << '\n';
-        write_file_atomically(directory + "/factor_of_safety.csv", table.str());
-      });
+    // The trials, and the largest that stood and the smallest that failed
+    // (the bracket, once both exist).
+    std::vector<Trial>         trials;
+    std::optional<std::size_t> stable, failed;
+    const auto factor_of = [&](const std::optional<std::size_t> &k) {
+      return trials[*k].factor;
     };
-
+    dealii::Timer total(communicator);
+    total.start();
     double factor = search.first_factor;
-    while (true)
+    while (!(stable && failed &&
+             factor_of(failed) - factor_of(stable) <= search.tolerance))
       {
-        if (stands_at > 0. && fails_at > 0.)
-          {
-            if (fails_at - stands_at <= search.tolerance)
-              break;
-            factor = 0.5 * (stands_at + fails_at);
-          }
+        if (stable && failed)
+          factor = 0.5 * (factor_of(stable) + factor_of(failed));
         if (trials.size() >= search.maximum_trials)
           throw CollectiveError(
             "The strength reduction ran 'Maximum trials' = " +
             std::to_string(search.maximum_trials) + " trials without " +
-            (stands_at < 0. ? "one that stood (the smallest factor tried, " +
-                                fixed(fails_at, 6) + ", failed)" :
-             fails_at < 0. ? "one that failed (the largest factor tried, " +
-                               fixed(stands_at, 6) + ", stood)" :
-                             "reaching the tolerance (the bracket is [" +
-                               fixed(stands_at, 6) + ", " + fixed(fails_at, 6) +
-                               "])") +
+            (!stable ? "one that stood (the smallest factor tried, " +
+                         fixed(factor_of(failed), 6) + ", failed)" :
+             !failed ? "one that failed (the largest factor tried, " +
+                         fixed(factor_of(stable), 6) + ", stood)" :
+                       "reaching the tolerance (the bracket is [" +
+                         fixed(factor_of(stable), 6) + ", " +
+                         fixed(factor_of(failed), 6) + "])") +
             "; see factor_of_safety.csv in '" + directory + "'.");
         char name[32];
         std::snprintf(name, sizeof(name), "trial_%02zu", trials.size() + 1);
         trials.push_back(run_trial(
           prm, options, search, directory, name, factor, communicator));
         const Trial &trial = trials.back();
-        write_table();
-        out << "trial " << std::setw(2) << trials.size()
-            << ": F = " << fixed(factor, 6)
-            << (trial.stands ? "  stands" : "  fails (" + trial.failure + ")")
-            << "  (load " << fixed(trial.load_factor, 4) << ", "
-            << trial.converged_steps << " steps, largest displacement "
-            << std::setprecision(4) << trial.largest_displacement << " m)";
-        if (!testing)
-          out << "  " << fixed(trial.wall_time, 1) << " s";
-        out << std::endl;
-        if (trial.stands && (stands_at < 0. || factor > stands_at))
-          {
-            stands_at   = factor;
-            last_stable = trials.size() - 1;
-          }
-        if (!trial.stands && (fails_at < 0. || factor < fails_at))
-          {
-            fails_at     = factor;
-            first_failed = trials.size() - 1;
-          }
-        if (stands_at < 0. || fails_at < 0.)
+        write_table(trials, directory, communicator);
+        out << describe(trial, trials.size(), testing) << std::endl;
+        std::optional<std::size_t> &end = trial.stands ? stable : failed;
+        if (!end ||
+            (trial.stands ? factor > factor_of(end) : factor < factor_of(end)))
+          end = trials.size() - 1;
+        if (!stable || !failed)
           factor = trial.stands ? factor * search.bracket_ratio :
                                   factor / search.bracket_ratio;
         // A trial that stands at or above a factor that failed: the
         // outcome is not monotonic in F, and no bracket can be trusted.
-        if (stands_at > 0. && fails_at > 0. && stands_at >= fails_at)
+        else if (factor_of(stable) >= factor_of(failed))
           throw CollectiveError(
             "The strength reduction is not monotonic: the scene stands at "
             "F = " +
-            fixed(stands_at, 6) + " but fails at F = " + fixed(fails_at, 6) +
+            fixed(factor_of(stable), 6) +
+            " but fails at F = " + fixed(factor_of(failed), 6) +
             " (see factor_of_safety.csv in '" + directory +
             "'); refine the load steps or lower 'Solver/Minimum load step'.");
       }
@@ -415,15 +458,15 @@ namespace impm
       if (!root)
         return;
       namespace fs = std::filesystem;
-      fs::create_directory_symlink(trials[last_stable].directory,
+      fs::create_directory_symlink(trials[*stable].directory,
                                    directory + "/last_stable");
-      fs::create_directory_symlink(trials[first_failed].directory,
+      fs::create_directory_symlink(trials[*failed].directory,
                                    directory + "/first_failed");
     });
     result_out << "Factor of safety: F = "
-               << fixed(0.5 * (stands_at + fails_at), 4)
-               << " (stands at F = " << fixed(stands_at, 4)
-               << ", fails at F = " << fixed(fails_at, 4) << "; "
+               << fixed(0.5 * (factor_of(stable) + factor_of(failed)), 4)
+               << " (stands at F = " << fixed(factor_of(stable), 4)
+               << ", fails at F = " << fixed(factor_of(failed), 4) << "; "
                << trials.size() << " trials";
     if (!testing)
       result_out << ", " << fixed(total.wall_time(), 1) << " s";

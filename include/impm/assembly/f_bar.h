@@ -7,11 +7,11 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <impm/system/dense_block_adder.h>
 #include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
 #include <impm/points/point_step.h>
+#include <impm/system/dense_block_adder.h>
 
 #include <algorithm>
 #include <functional>

@@ -4,11 +4,11 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
-#include <impm/system/dense_block_adder.h>
 #include <impm/core/parameters.h>
 #include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
+#include <impm/system/dense_block_adder.h>
 
 #include <string>
 #include <vector>

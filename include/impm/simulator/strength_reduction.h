@@ -133,6 +133,39 @@ namespace impm
               const std::string                   &directory,
               const double                         factor,
               const MPI_Comm                       communicator);
+
+    /**
+     * @brief Refuse a scene a search cannot run (a resume, --stop-after-step,
+     * inertia, a model without a strength reduction, no body that weakens),
+     * one line each, before anything is written.
+     */
+    static void
+    check_scene(dealii::ParameterHandler &prm,
+                const RunOptions         &options,
+                const RunParameters<dim> &settings);
+
+    /**
+     * @brief Take over the output directory @p directory for the search
+     * (OutputDirectory::prepare()) and remove the trials and links of an
+     * earlier search in it. Collective.
+     */
+    static void
+    prepare_directory(const std::string        &directory,
+                      const RunParameters<dim> &settings,
+                      const RunOptions         &options,
+                      const MPI_Comm            communicator);
+
+    /** @brief Write `factor_of_safety.csv` in @p directory atomically
+     *  (rank 0; collective). */
+    static void
+    write_table(const std::vector<Trial> &trials,
+                const std::string        &directory,
+                const MPI_Comm            communicator);
+
+    /** @brief The terminal line of trial @p number (wall time unless
+     *  @p testing). */
+    static std::string
+    describe(const Trial &trial, const unsigned int number, const bool testing);
   };
 } // namespace impm
 
