@@ -63,7 +63,7 @@ namespace impm
       try
         {
           step.material->update(
-            PulledBackStress<dim>::embed(step.deformation_increment),
+            step.full_deformation_increment(),
             PointState<dim>(properties).elastic_left_cauchy_green(),
             material_points.material_state(properties),
             step.update);
@@ -104,6 +104,21 @@ namespace impm
             continue;
           }
         step.deformation_increment_inverse = invert(dF);
+        // Axisymmetry: the hoop stretch r^{n+1} / r^n.
+        if (step.inverse_radius != 0.)
+          {
+            double radial_increment = 0.;
+            for (unsigned int v = 0; v < s.n_nodes; ++v)
+              radial_increment +=
+                s.weights[v] * increment.local_element(step.dofs[v * dim]);
+            step.hoop_increment = 1. + radial_increment * step.inverse_radius;
+            if (!(step.hoop_increment > 0.) ||
+                !std::isfinite(step.hoop_increment))
+              {
+                admissible = false;
+                continue;
+              }
+          }
         // Without a coupling that sets the volumes each point is updated
         // at once; with it, through the coupling once every increment is
         // known.
@@ -178,6 +193,24 @@ namespace impm
 
   namespace
   {
+    /**
+     * @brief Axisymmetry: add one point's hoop force to its radial nodal
+     * forces, @f$f_{v,r} \mathrel{+}= \tilde P_{\theta\theta} V^n S_v /
+     * r^n@f$ with @f$\tilde P_{\theta\theta} V^n = \tau_{\theta\theta}
+     * V^0 / \Delta F_{\theta\theta}@f$.
+     */
+    template <int dim>
+    void
+    add_hoop_forces(const PointStep<dim> &step, double *forces)
+    {
+      const double hoop_stress = step.update.kirchhoff_stress[2][2] /
+                                 step.hoop_increment * step.initial_volume *
+                                 step.inverse_radius;
+      for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+        forces[v * dim] += hoop_stress * step.support.weights[v];
+    }
+
+
     /**
      * @brief The assembler of one statement of equilibrium, @p Form
      * (PreviouslyConvergedForm or UpdatedLagrangianForm).
@@ -254,6 +287,8 @@ namespace impm
                              gradients,
                              step.support.n_nodes,
                              forces.data());
+            if (step.inverse_radius != 0.)
+              add_hoop_forces(step, forces.data());
             for (unsigned int k = 0; k < n; ++k)
               internal_force.local_element(step.dofs[k]) += forces[k];
           }
@@ -268,18 +303,23 @@ namespace impm
         const auto stiffness = std::make_unique<PointStiffness<dim>>();
         std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>
           group_gradients;
+        // Axisymmetry: N_v / r^n on the point's and on the group's support.
+        std::array<double, PointSupport<dim>::max_nodes> hoop_weights,
+          group_hoop_weights;
         for (const AssemblyGroup &group : this->system.assembly_groups)
           {
             // The group's matrix over all its support's DoFs; the rows and
             // columns in the linear system are picked when it is added.
             // A volume coupling's point term has no major symmetry.
+            // The hoop terms are added to every entry (general).
             const bool symmetric =
               volume_coupling == nullptr &&
               std::all_of(
                 group.points.begin(),
                 group.points.end(),
                 [&](const unsigned int p) {
-                  return point_steps[p].material->has_symmetric_tangent();
+                  return point_steps[p].material->has_symmetric_tangent() &&
+                         point_steps[p].inverse_radius == 0.;
                 });
             stiffness->reset(group.n_nodes,
                              symmetric ? TangentSymmetry::major :
@@ -287,12 +327,21 @@ namespace impm
             const unsigned char *node_positions = group.node_positions.data();
             for (const unsigned int p : group.points)
               {
-                const PointStep<dim> &step = point_steps[p];
+                const PointStep<dim> &step         = point_steps[p];
+                const bool            axisymmetric = step.inverse_radius != 0.;
+                HoopTangent<dim>      hoop;
                 Tensor<4, dim>        tangent =
-                  Form::tangent(*step.material,
-                                step.update,
-                                step.deformation_increment_inverse,
-                                step.initial_volume);
+                  axisymmetric ?
+                           axisymmetric_tangent(*step.material,
+                                         step.update,
+                                         step.deformation_increment_inverse,
+                                         step.hoop_increment,
+                                         step.initial_volume,
+                                         hoop) :
+                           Form::tangent(*step.material,
+                                  step.update,
+                                  step.deformation_increment_inverse,
+                                  step.initial_volume);
                 if (volume_coupling != nullptr)
                   tangent = volume_coupling->point_tangent(
                     p,
@@ -302,6 +351,12 @@ namespace impm
                                        step.initial_volume),
                     gradient_map(p));
                 const Tensor<1, dim> *gradients = this->gradients(p);
+                // Axisymmetry: the weights over the radius, N_v / r^n.
+                if (axisymmetric)
+                  for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+                    hoop_weights[v] =
+                      step.support.weights[v] * step.inverse_radius;
+                const double *weights_over_radius = hoop_weights.data();
                 if (!group.node_positions.empty())
                   {
                     // The point's gradients on the group's support, zero
@@ -309,11 +364,26 @@ namespace impm
                     std::fill(group_gradients.begin(),
                               group_gradients.begin() + group.n_nodes,
                               Tensor<1, dim>());
+                    if (axisymmetric)
+                      {
+                        std::fill(group_hoop_weights.begin(),
+                                  group_hoop_weights.begin() + group.n_nodes,
+                                  0.);
+                        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+                          group_hoop_weights[node_positions[v]] =
+                            hoop_weights[v];
+                        weights_over_radius = group_hoop_weights.data();
+                      }
                     for (unsigned int v = 0; v < step.support.n_nodes; ++v)
                       group_gradients[*node_positions++] = gradients[v];
                     gradients = group_gradients.data();
                   }
                 stiffness->add(tangent, gradients, group.in_system.data());
+                if (axisymmetric)
+                  stiffness->add_hoop(hoop,
+                                      weights_over_radius,
+                                      gradients,
+                                      group.in_system.data());
               }
             // Read in place: each entry is one gather.
             stiffness->complete();

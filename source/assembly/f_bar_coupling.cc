@@ -16,7 +16,9 @@ namespace impm
     : FBar(inputs.grid,
            inputs.parameters.material_points.cell_pressure_unknowns,
            inputs.parameters.material_points.pressure_jump_stabilisation)
-  {}
+  {
+    inputs.refuse_axisymmetry("Material points/F-bar");
+  }
 
 
 

@@ -181,7 +181,16 @@ namespace impm
                 face_matrix_known[f] = true;
                 face_extents[f]      = extents;
               }
-            const FullMatrix<double> &matrix = face_matrices[f];
+            // In axisymmetry the face is a ring: 2 pi r at its centre.
+            FullMatrix<double> ring_matrix;
+            if (grid.cartesian().axisymmetric)
+              {
+                ring_matrix = face_matrices[f];
+                ring_matrix *=
+                  grid.cartesian().ring_length(cell->face(f)->center());
+              }
+            const FullMatrix<double> &matrix =
+              grid.cartesian().axisymmetric ? ring_matrix : face_matrices[f];
             // The two cells share the face's nodes: each DoF once, with
             // its rows and columns summed.
             std::vector<unsigned int> cell_dofs(2 * n);

@@ -296,7 +296,9 @@ namespace impm
                                                           start_displacement[b],
                                                           start_rotation[b]) :
                                        at - start_displacement[b];
-                    probe.area = weight * face_area;
+                    // In axisymmetry the ring the Gauss point sweeps.
+                    probe.area =
+                      weight * face_area * grid.cartesian().ring_length(at);
                     if (probe.slot != numbers::invalid_unsigned_int)
                       for (unsigned int d = 0; d < dim; ++d)
                         probe.previous_traction[d] =

@@ -18,9 +18,11 @@ namespace impm
     prm.declare_entry(
       "Shape",
       "box",
-      Patterns::Selection("box|disc|sphere|polygon" + extra_shapes),
+      Patterns::Selection("box|disc|sphere|polygon|cylinder" + extra_shapes),
       "Shape of the region: box (2D, 3D), "
-      "disc (2D), sphere (3D) or polygon (2D)" +
+      "disc (2D), sphere (3D), polygon (2D) or cylinder (3D, material "
+      "bodies: its axis along z, from its base centre 'Center' up by "
+      "'Height'; an axisymmetric scene's 3D counterpart)" +
         (extra_shapes.empty() ?
            std::string(".") :
            ", or " + extra_shapes.substr(1) + " (rigid bodies, 3D)."));
@@ -36,11 +38,16 @@ namespace impm
     prm.declare_entry("Center",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),
-                      "Disc or sphere: centre, in m.");
+                      "Disc or sphere: centre; cylinder: the centre of "
+                      "its base; in m.");
     prm.declare_entry("Radius",
                       "1",
                       Patterns::Double(0.),
-                      "Disc or sphere: radius in m (> 0).");
+                      "Disc, sphere or cylinder: radius in m (> 0).");
+    prm.declare_entry("Height",
+                      "1",
+                      Patterns::Double(0.),
+                      "Cylinder: height along z in m (> 0).");
     prm.declare_entry("Vertices",
                       "0, 0; 1, 0; 0, 1",
                       Patterns::Anything(),
@@ -108,10 +115,10 @@ namespace impm
     if ((shape == Shape::disc || shape == Shape::polygon) && dim != 2)
       Parameters::bad_value(name + "/Shape",
                             prm.get("Shape"),
-                            "in 3D only box or sphere.");
-    if (shape == Shape::sphere && dim != 3)
+                            "in 3D only box, sphere or cylinder.");
+    if ((shape == Shape::sphere || shape == Shape::cylinder) && dim != 3)
       Parameters::bad_value(name + "/Shape",
-                            "sphere",
+                            prm.get("Shape"),
                             "in 2D only box, disc or polygon.");
     if (shape == Shape::box)
       {
@@ -131,7 +138,8 @@ namespace impm
                   prm.get("Lower corner") + ").");
           }
       }
-    else if (shape == Shape::disc || shape == Shape::sphere)
+    else if (shape == Shape::disc || shape == Shape::sphere ||
+             shape == Shape::cylinder)
       {
         const auto c = Parameters::get_vector(prm, name, "Center", dim);
         for (unsigned int d = 0; d < dim; ++d)
@@ -140,6 +148,11 @@ namespace impm
         if (!(radius > 0.))
           Parameters::bad_value(name + "/Radius",
                                 prm.get("Radius"),
+                                "it must be > 0.");
+        height = prm.get_double("Height");
+        if (shape == Shape::cylinder && !(height > 0.))
+          Parameters::bad_value(name + "/Height",
+                                prm.get("Height"),
                                 "it must be > 0.");
       }
     else
@@ -301,12 +314,20 @@ namespace impm
     if (shape == Shape::box)
       return {lower_corner, upper_corner};
     Point<dim> lower, upper;
-    if (shape == Shape::disc || shape == Shape::sphere)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          lower[d] = center[d] - radius;
-          upper[d] = center[d] + radius;
-        }
+    if (shape == Shape::disc || shape == Shape::sphere ||
+        shape == Shape::cylinder)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = center[d] - radius;
+            upper[d] = center[d] + radius;
+          }
+        if (shape == Shape::cylinder)
+          {
+            lower[dim - 1] = center[dim - 1];
+            upper[dim - 1] = center[dim - 1] + height;
+          }
+      }
     else
       {
         lower = upper = vertices[0];
@@ -337,6 +358,8 @@ namespace impm
       return numbers::PI * radius * radius;
     if (shape == Shape::sphere)
       return 4. / 3. * numbers::PI * radius * radius * radius;
+    if (shape == Shape::cylinder)
+      return numbers::PI * radius * radius * height;
     double twice_area = 0.;
     for (unsigned int i = 0; i < vertices.size(); ++i)
       {
@@ -361,6 +384,13 @@ namespace impm
       }
     if (shape == Shape::disc || shape == Shape::sphere)
       return x.distance(center) < radius;
+    if (shape == Shape::cylinder)
+      {
+        const double dx = x[0] - center[0], dy = x[1] - center[1];
+        return dx * dx + dy * dy < radius * radius &&
+               x[dim - 1] > center[dim - 1] &&
+               x[dim - 1] < center[dim - 1] + height;
+      }
     // Polygon: even-odd rule.
     bool inside = false;
     for (unsigned int i = 0, j = vertices.size() - 1; i < vertices.size();
@@ -386,6 +416,9 @@ namespace impm
       out << " [" << lower_corner << "] - [" << upper_corner << "]";
     else if (shape == Shape::polygon)
       out << " with " << vertices.size() << " vertices";
+    else if (shape == Shape::cylinder)
+      out << " base centre (" << center << ") radius " << radius << " height "
+          << height;
     else
       out << " centre (" << center << ") radius " << radius;
     return out.str();

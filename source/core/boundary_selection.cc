@@ -232,7 +232,16 @@ namespace impm
       for (const auto &[point, faces] : local)
         for (unsigned int f = 0; f < 2 * dim; ++f)
           if (faces & (1u << f))
-            point_areas[point.first][f] += lattice_face[Names::face_axis(f)];
+            {
+              // In axisymmetry the ring the face sweeps: 2 pi r at its
+              // centre.
+              Point<dim> centre = point.second;
+              if (Names::face_axis(f) == 0)
+                centre[0] +=
+                  (Names::face_sign(f) > 0 ? 0.5 : -0.5) * spacing[0];
+              point_areas[point.first][f] +=
+                lattice_face[Names::face_axis(f)] * grid.ring_length(centre);
+            }
     for (auto piece : pieces)
       {
         // A side chosen with a region: in 2D the region clips each piece
@@ -268,7 +277,10 @@ namespace impm
             axis = d;
         const unsigned int face =
           by_region ? 2 * axis + (piece.normal[axis] > 0. ? 1 : 0) : boundary;
-        point_areas[nearest->first.first][face] += piece.size;
+        // In axisymmetry the ring the piece sweeps (exact for a straight
+        // piece: 2 pi times its midpoint's radius times its length).
+        point_areas[nearest->first.first][face] +=
+          piece.size * grid.ring_length(piece.midpoint);
       }
     if (point_areas.empty())
       throw InputError(section + ": no material point of Body " +

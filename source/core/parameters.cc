@@ -173,6 +173,19 @@ namespace impm
     Grid<dim>::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Grid");
+      prm.declare_entry(
+        "Axisymmetric",
+        "false",
+        Patterns::Bool(),
+        "2D only: the grid is the meridian plane of a solid of revolution "
+        "about the y axis, x being the radius r (>= 0) and y the axis z. "
+        "Every volume, mass, area and force is that of the whole ring "
+        "(2 pi r per unit of the plane's area or length), and the points "
+        "carry the hoop strain and stress (stress_zz is the hoop stress). "
+        "A grid that reaches the axis (Lower corner x = 0) needs the radial "
+        "displacement held there: 'Condition x-' roller or fixed. Not yet "
+        "with F-bar, cell pressure unknowns, ghost stabilisation, springs, "
+        "absorbing boundaries or the updated Lagrangian formulation.");
       prm.declare_entry("Lower corner",
                         "0, 0",
                         Patterns::List(Patterns::Double(), 2, 3),
@@ -225,6 +238,7 @@ namespace impm
     Grid<dim>::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Grid");
+      axisymmetric     = prm.get_bool("Axisymmetric");
       const auto lower = get_vector(prm, "Grid", "Lower corner", dim);
       const auto upper = get_vector(prm, "Grid", "Upper corner", dim);
       const auto cells = get_vector(prm, "Grid", "Number of cells", dim);
@@ -263,7 +277,42 @@ namespace impm
               face_regions[f].second[d] = region[dim + d];
             }
         }
+      if (axisymmetric)
+        check_axisymmetric_grid(prm);
       prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    Grid<dim>::check_axisymmetric_grid(const ParameterHandler &prm) const
+    {
+      if (dim != 2)
+        bad_value("Grid/Axisymmetric",
+                  "true",
+                  "axisymmetry is a 2D option (Dimension = 2: x the radius, "
+                  "y the axis).");
+      if (lower_corner[0] < 0.)
+        bad_value("Grid/Lower corner",
+                  prm.get("Lower corner"),
+                  "with Axisymmetric = true x is the radius: the grid's "
+                  "lower x must not be negative.");
+      if (lower_corner[0] > 0.)
+        return;
+      // The grid reaches the axis: the radial displacement is zero there.
+      const FaceCondition axis       = face_conditions[0];
+      const bool          radial_set = axis == FaceCondition::roller ||
+                              axis == FaceCondition::fixed ||
+                              ((axis == FaceCondition::prescribed ||
+                                axis == FaceCondition::prescribed_normal) &&
+                               face_displacements[0][0] == 0.);
+      if (!radial_set || face_has_region[0])
+        bad_value("Grid/Condition x-",
+                  prm.get("Condition x-"),
+                  "the grid reaches the axis (lower x = 0), where the radial "
+                  "displacement is zero: set 'Condition x-' to roller (or "
+                  "fixed) on the whole face, without 'Region x-'.");
     }
 
 

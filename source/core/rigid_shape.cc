@@ -2,6 +2,7 @@
 // 'Shape' of a "Rigid body k" subsection to a class of rigid_shapes.h
 // (declare_parameters() names them and declares their entries, create()
 // makes one). Each shape's geometry is in its own file.
+#include <impm/base/errors.h>
 #include <impm/core/body.h>
 #include <impm/core/parameters.h>
 #include <impm/core/rigid_shapes.h>
@@ -60,6 +61,10 @@ namespace impm
           if constexpr (dim == 2)
             return std::make_unique<RigidPolygon>(outline.vertices);
           break;
+        case Shape::cylinder:
+          throw InputError(name + "/Shape = cylinder: a shape of material "
+                                  "bodies only; a rigid cylinder is an 'stl' "
+                                  "surface, or a 'cone' with its shaft.");
       }
     throw std::logic_error(name + ": no rigid shape '" + shape + "' in " +
                            std::to_string(dim) + "D.");

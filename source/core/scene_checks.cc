@@ -52,16 +52,26 @@ namespace impm
         for (const auto &body : parameters.bodies)
           {
             const auto box = body.bounding_box();
+            // A face with a roller may be a symmetry plane: a body may
+            // cross it (the part beyond is cut off, a symmetric model).
+            const auto symmetry_plane = [&](const unsigned int face) {
+              return grid.face_conditions[face] ==
+                       Parameters::FaceCondition::roller &&
+                     !grid.face_has_region[face];
+            };
             for (unsigned int d = 0; d < dim; ++d)
-              if (box.first[d] < grid.lower_corner[d] - tolerance ||
-                  box.second[d] > grid.upper_corner[d] + tolerance)
+              if ((box.first[d] < grid.lower_corner[d] - tolerance &&
+                   !symmetry_plane(2 * d)) ||
+                  (box.second[d] > grid.upper_corner[d] + tolerance &&
+                   !symmetry_plane(2 * d + 1)))
                 throw InputError(
                   body.name + " (" + box_string(box.first, box.second) +
                   ") reaches outside the grid " +
                   box_string(grid.lower_corner, grid.upper_corner) + " in " +
                   Names::axis(d) +
                   ": a body must lie inside 'Grid/Lower corner' and "
-                  "'Grid/Upper corner'.");
+                  "'Grid/Upper corner', or cross a face with a roller "
+                  "('Grid/Condition', a symmetry plane).");
           }
       }
 
@@ -212,8 +222,10 @@ namespace impm
         for (const auto &body : parameters.bodies)
           {
             const auto box = body.bounding_box();
-            bool touches   = std::abs(face % 2 == 0 ? box.first[axis] - plane :
-                                                    plane - box.second[axis]) <
+            // (A body that crosses the face, a symmetry plane, touches
+            // it.)
+            bool touches = (face % 2 == 0 ? box.first[axis] - plane :
+                                            plane - box.second[axis]) <
                            cell_size(grid, axis) * (1. + 1e-10);
             if (grid.face_has_region[face])
               for (unsigned int d = 0; d < dim; ++d)

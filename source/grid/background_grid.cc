@@ -98,6 +98,7 @@ namespace impm
   {
     const auto &p = parameters;
     grid.initialize(p.lower_corner, p.upper_corner, p.n_cells);
+    grid.axisymmetric = p.axisymmetric;
 
     // A coarse mesh refined globally: the largest power of two that divides
     // every cell count keeps the coarse mesh, which every process stores,
@@ -275,7 +276,9 @@ namespace impm
         internal_force.local_element(i) - external_force.local_element(i);
     Utilities::MPI::sum(reactions.by_column, communicator, reactions.by_column);
 
-    // Global balance: the reactions carry the whole external load.
+    // Global balance: the reactions carry the whole external load. In
+    // axisymmetry only along the axis: the nodal forces' radial sum holds
+    // the hoop forces, which a ring balances within itself.
     std::vector<double> total(dim, 0.);
     for (const auto &[node, dofs] : dofs_of_node)
       for (unsigned int c = 0; c < dim; ++c)
@@ -283,7 +286,7 @@ namespace impm
           total[c] += external_force.local_element(dofs[c]);
     Utilities::MPI::sum(total, communicator, total);
     double load = 0., imbalance = 0.;
-    for (unsigned int c = 0; c < dim; ++c)
+    for (unsigned int c = grid.axisymmetric ? 1 : 0; c < dim; ++c)
       {
         double sum = total[c] - rigid_body_force[c];
         for (unsigned int f = 0; f < 2 * dim; ++f)

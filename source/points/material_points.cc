@@ -1,7 +1,6 @@
 #include <deal.II/base/mpi.h>
 
 #include <impm/base/errors.h>
-#include <impm/mechanics/pulled_back_stress.h>
 #include <impm/points/material_points.h>
 
 #include <algorithm>
@@ -253,9 +252,7 @@ namespace impm
               unsigned int       n_per_cell = 1;
               for (unsigned int d = 0; d < dim; ++d)
                 n_per_cell *= n;
-              const double volume           = cell_volume / n_per_cell;
-              properties[P::initial_volume] = volume;
-              properties[P::mass]           = body.density * volume;
+              const double volume = cell_volume / n_per_cell;
               for (unsigned int d = 0; d < dim; ++d)
                 {
                   properties[P::domain_half_length + d] =
@@ -288,6 +285,11 @@ namespace impm
                       }
                   for (unsigned int d = 0; d < dim; ++d)
                     properties[P::initial_position + d] = position[d];
+                  // In axisymmetry the point is the ring it sweeps.
+                  properties[P::initial_volume] =
+                    volume * grid.ring_length(position);
+                  properties[P::mass] =
+                    body.density * properties[P::initial_volume];
                   set_initial_stress(
                     body, position, g, properties, outside_yield_surface);
                   particle_handler.insert_particle(
@@ -383,8 +385,11 @@ namespace impm
       if (cell->is_locally_owned())
         {
           double volume = 0.;
+          // In axisymmetry a point's volume is that of its ring: the
+          // fill is of the plane.
           for (const auto &point : particle_handler.particles_in_cell(cell))
-            volume += PointState<dim>(point.get_properties()).volume();
+            volume += PointState<dim>(point.get_properties()).volume() /
+                      grid.ring_length(point.get_location());
           fill[cell->active_cell_index()] = volume / cell->measure();
         }
     return fill;
@@ -413,8 +418,7 @@ namespace impm
               s.weights[v] * increment.local_element(step.dofs[v * dim + i]);
 
         const Tensor<2, 3> F =
-          PulledBackStress<dim>::embed(step.deformation_increment) *
-          state.deformation_gradient();
+          step.full_deformation_increment() * state.deformation_gradient();
         state.set_deformation_gradient(F);
         state.set_elastic_left_cauchy_green(
           step.update.elastic_left_cauchy_green);
@@ -437,13 +441,18 @@ namespace impm
                 for (unsigned int a = 0; a < 3; ++a)
                   stretch += std::sqrt(eigen[a].first) * eigen[a].second[d] *
                              eigen[a].second[d];
-                // At most h/2: a domain then spans at most three nodes.
-                state.set_domain_half_length(d,
-                                             std::min(initial_half_length[d] *
-                                                        stretch,
-                                                      0.5 * grid.cell_size[d]));
+                // At most h/2: a domain then spans at most three nodes;
+                // in axisymmetry it stays off the axis.
+                double half_length = std::min(initial_half_length[d] * stretch,
+                                              0.5 * grid.cell_size[d]);
+                if (d == 0 && grid.axisymmetric)
+                  half_length = std::min(half_length, position[0]);
+                state.set_domain_half_length(d, half_length);
               }
           }
+        else if (grid.axisymmetric &&
+                 state.domain_half_length()[0] > position[0])
+          state.set_domain_half_length(0, position[0]);
 
         bool finite = true;
         for (unsigned int d = 0; d < dim; ++d)

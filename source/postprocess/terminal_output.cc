@@ -19,7 +19,8 @@ namespace impm
 {
   namespace
   {
-    /** A point's id and its printed values: X, u, sigma_vertical, sigma_xx. */
+    /** A point's id and its printed values: X, u, sigma_vertical, sigma_xx
+     *  (and in axisymmetry the hoop stress). */
     using PointValues = std::pair<types::particle_index, std::vector<double>>;
 
     /**
@@ -249,6 +250,8 @@ namespace impm
             values.push_back(point.get_location()[d] - X[d]);
           values.push_back(tau[dim - 1][dim - 1] / J);
           values.push_back(tau[0][0] / J);
+          if (context.parameters.grid.axisymmetric)
+            values.push_back(tau[2][2] / J);
           local.emplace_back(point.get_id(), values);
         }
       // The points nearest to the probe positions (smallest distance, then
@@ -515,7 +518,18 @@ namespace impm
                         "%.*f",
                         digits,
                         values[2 * dim + 1] / stress);
-          std::cout << ", sigma_xx = " << buffer << '\n';
+          std::cout << ", sigma_xx = " << buffer;
+          // Axisymmetry: the hoop stress.
+          if (values.size() > 2 * dim + 2)
+            {
+              std::snprintf(buffer,
+                            sizeof(buffer),
+                            "%.*f",
+                            digits,
+                            values[2 * dim + 2] / stress);
+              std::cout << ", sigma_hoop = " << buffer;
+            }
+          std::cout << '\n';
         }
     }
   } // namespace

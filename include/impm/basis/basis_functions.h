@@ -161,6 +161,26 @@ namespace impm
     std::array<unsigned int, dim> n_cells;
     /** Cell size in each direction. */
     Tensor<1, dim> cell_size;
+    /**
+     * Whether the grid is the meridian plane of a solid of revolution
+     * (2D only): the first coordinate is the radius r, the second the axis
+     * z, and each area or length of the plane stands for the ring it
+     * sweeps about the axis.
+     */
+    bool axisymmetric = false;
+
+    /**
+     * @brief The length of the circle that a point at @p x sweeps about the
+     * axis, @f$2\pi r@f$, in axisymmetry; 1 otherwise (plane strain counts
+     * per unit thickness, 3D needs no factor). A volume or mass of the
+     * plane times this is that of the ring; so is an area, with the
+     * radius of its centre (exact for a straight side).
+     */
+    double
+    ring_length(const Point<dim> &x) const
+    {
+      return axisymmetric ? 2. * numbers::PI * x[0] : 1.;
+    }
 
     /**
      * @brief Set up from corners and cell counts.

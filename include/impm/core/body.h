@@ -21,7 +21,8 @@ namespace impm
    * @brief A body: a region of the scene filled with material points, with
    * its own points per cell, density and material.
    *
-   * Shapes: box (2D and 3D), disc (2D), sphere (3D) and polygon (2D, given
+   * Shapes: box (2D and 3D), disc (2D), sphere (3D), cylinder (3D, along
+   * z) and polygon (2D, given
    * by its vertices in order). Points are placed at n regular positions per
    * cell and direction wherever those positions lie inside the shape.
    *
@@ -147,21 +148,25 @@ namespace impm
       /** A sphere (3D). */
       sphere,
       /** A polygon (2D). */
-      polygon
+      polygon,
+      /** A circular cylinder along z (3D). */
+      cylinder
     };
 
     /** The scene's names of the shapes, in enum order. */
-    static constexpr std::array<const char *, 4> shape_names = {
-      {"box", "disc", "sphere", "polygon"}};
+    static constexpr std::array<const char *, 5> shape_names = {
+      {"box", "disc", "sphere", "polygon", "cylinder"}};
 
     /** The body's shape. */
     Shape shape = Shape::box;
     /** Box corners. */
     Point<dim> lower_corner, upper_corner;
-    /** Disc or sphere centre. */
+    /** Disc or sphere centre; a cylinder's base centre. */
     Point<dim> center;
-    /** Disc or sphere radius. */
+    /** Disc, sphere or cylinder radius. */
     double radius = 0.;
+    /** Cylinder height (along z, up from its base centre). */
+    double height = 0.;
     /** Polygon vertices (2D). */
     std::vector<Point<dim>> vertices;
     /** Points per cell and direction. */

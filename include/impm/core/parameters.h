@@ -235,6 +235,9 @@ namespace impm
     template <int dim>
     struct Grid
     {
+      /** Whether the 2D grid is the meridian plane (r, z) of a solid of
+       *  revolution (CartesianGrid::axisymmetric). */
+      bool axisymmetric = false;
       /** Lower corner. */
       Point<dim> lower_corner;
       /** Upper corner. */
@@ -256,6 +259,12 @@ namespace impm
       /** @brief Read them. */
       void
       parse_parameters(ParameterHandler &prm);
+
+    private:
+      /** @brief Refuse an axisymmetric grid in 3D, across the axis, or
+       *  reaching it without the radial displacement held there. */
+      void
+      check_axisymmetric_grid(const ParameterHandler &prm) const;
     };
 
     /** @brief How points and nodes are weighted. */

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <impm/base/errors.h>
 #include <impm/base/plugin_list.h>
 #include <impm/core/load_path.h>
 #include <impm/core/parameters.h>
@@ -445,6 +446,19 @@ namespace impm
     const BackgroundGrid<dim> &grid;
     /** The scene's time (subsection `Time`). */
     const Parameters::Time &time;
+
+    /**
+     * @brief For a coupling not yet formulated in axisymmetry: refuse an
+     * axisymmetric scene with one line naming @p coupling.
+     */
+    void
+    refuse_axisymmetry(const std::string &coupling) const
+    {
+      if (parameters.grid.axisymmetric)
+        throw InputError(coupling +
+                         " is not yet available with Grid/Axisymmetric = "
+                         "true (its terms lack the ring's 2 pi r).");
+    }
   };
 
   /**

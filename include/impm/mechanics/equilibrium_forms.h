@@ -58,6 +58,34 @@ namespace impm
   };
 
   /**
+   * @brief Axisymmetry, in the previously converged statement: the
+   * in-plane tangent @f$A V^n@f$ (returned) and its hoop entries
+   * (@p hoop), from the material's whole 3x3 pulled-back tangent with
+   * @f$\Delta F_{\theta\theta}@f$ = @p hoop_increment.
+   */
+  template <int dim>
+  Tensor<4, dim>
+  axisymmetric_tangent(const Material           &material,
+                       const ConstitutiveUpdate &update,
+                       const Tensor<2, dim>     &dF_inverse,
+                       const double              hoop_increment,
+                       const double              initial_volume,
+                       HoopTangent<dim>         &hoop)
+  {
+    Tensor<2, 3> full_inverse = PulledBackStress<dim>::embed(dF_inverse);
+    if constexpr (dim == 2)
+      full_inverse[2][2] = 1. / hoop_increment;
+    Tensor<4, 3> material_part;
+    material.pulled_back_tangent(update, 3, full_inverse, material_part);
+    hoop = PulledBackStress<dim>::hoop_tangent_times_volume(
+      material_part, update.kirchhoff_stress, hoop_increment, initial_volume);
+    return PulledBackStress<dim>::tangent_times_volume(material_part,
+                                                       update.kirchhoff_stress,
+                                                       dF_inverse,
+                                                       initial_volume);
+  }
+
+  /**
    * @brief One material point's integrands in the updated Lagrangian
    * statement (the paper's eq. 7-8; formulation note, section 4): the
    * Cauchy stress over @f$V^{n+1}@f$, @f$\sigma V^{n+1} = \tau V^0@f$, and

@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <impm/basis/basis_functions.h>
+#include <impm/mechanics/pulled_back_stress.h>
 
 #include <array>
 #include <utility>
@@ -131,6 +132,47 @@ namespace impm
                 }
             }
         }
+    }
+
+    /**
+     * @brief Axisymmetry: add one point's hoop terms,
+     * @f$K_{(v,i)(w,k)} \mathrel{+}= \nabla S_{v,j} A_{ij\theta\theta}
+     * \bar S_w \delta_{k r} + \delta_{i r} \bar S_v A_{\theta\theta kq}
+     * \nabla S_{w,q} + \delta_{i r}\delta_{k r} \bar S_v
+     * A_{\theta\theta\theta\theta} \bar S_w@f$ with @f$\bar S_v = S_v
+     * / r^n@f$ (@p weights_over_radius), the radius being the first
+     * component. Only for a matrix started with TangentSymmetry::general.
+     */
+    void
+    add_hoop(const HoopTangent<dim> &hoop,
+             const double           *weights_over_radius,
+             const Tensor<1, dim>   *gradients,
+             const unsigned char    *rows_needed)
+    {
+      Assert(symmetry == TangentSymmetry::general, ExcInternalError());
+      const unsigned int n = n_nodes * dim;
+      const double      *h = weights_over_radius;
+      for (unsigned int v = 0; v < n_nodes; ++v)
+        for (unsigned int i = 0; i < dim; ++i)
+          {
+            if (!rows_needed[v * dim + i])
+              continue;
+            double *row = values.data() + (i * n_nodes + v) * n;
+            // The in-plane row's change with the hoop stretch (radial
+            // columns only).
+            const double by_hoop = gradients[v] * hoop.in_plane_by_hoop[i];
+            for (unsigned int w = 0; w < n_nodes; ++w)
+              row[w] += by_hoop * h[w];
+            if (i != 0 || h[v] == 0.)
+              continue;
+            // The radial row's hoop force.
+            for (unsigned int k = 0; k < dim; ++k)
+              for (unsigned int w = 0; w < n_nodes; ++w)
+                row[k * n_nodes + w] +=
+                  h[v] * (hoop.hoop_by_in_plane[k] * gradients[w]);
+            for (unsigned int w = 0; w < n_nodes; ++w)
+              row[w] += h[v] * hoop.hoop_by_hoop * h[w];
+          }
     }
 
     /**

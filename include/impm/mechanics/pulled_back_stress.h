@@ -22,6 +22,28 @@ namespace impm
    *
    * @tparam dim Space dimension.
    */
+  /**
+   * @brief Axisymmetry: the entries of the tangent times the volume,
+   * @f$A V^n@f$, that pair an in-plane index pair with the hoop pair
+   * @f$\theta\theta@f$ (the rest of the tangent couples no hoop entry: in
+   * axisymmetry @f$\Delta F@f$ and @f$\tau@f$ have no in-plane-hoop
+   * entries).
+   *
+   * @tparam dim Space dimension (2: the meridian plane).
+   */
+  template <int dim>
+  struct HoopTangent
+  {
+    /** @f$A_{ij\theta\theta} V^n@f$: the in-plane stress's change with
+     *  the hoop stretch. */
+    Tensor<2, dim> in_plane_by_hoop;
+    /** @f$A_{\theta\theta kq} V^n@f$: the hoop stress's change with the
+     *  in-plane increment. */
+    Tensor<2, dim> hoop_by_in_plane;
+    /** @f$A_{\theta\theta\theta\theta} V^n@f$. */
+    double hoop_by_hoop = 0.;
+  };
+
   template <int dim>
   struct PulledBackStress
   {
@@ -133,6 +155,40 @@ namespace impm
               A[i][j][k][q] =
                 initial_volume * M[i][j][k][q] - T[i][q] * dF_inverse[j][k];
       return A;
+    }
+
+    /**
+     * @brief Axisymmetry: the hoop entries of @f$A\,V^n@f$ (HoopTangent)
+     * from the material part of the whole 3x3 tangent, @p M (computed with
+     * all three components): @f$A_{ij\theta\theta} = M_{ij\theta\theta}
+     * @f$, @f$A_{\theta\theta kq} = M_{\theta\theta kq}@f$ and
+     * @f$A_{\theta\theta\theta\theta} = M_{\theta\theta\theta\theta}
+     * - \tau_{\theta\theta}/\Delta F_{\theta\theta}^2@f$, each times
+     * @f$V^0@f$ (the geometric term of the general formula vanishes where an
+     * index pair mixes the plane and the hoop).
+     *
+     * @param M The material part (Material::pulled_back_tangent()).
+     * @param tau Kirchhoff stress.
+     * @param hoop_increment @f$\Delta F_{\theta\theta}@f$.
+     * @param initial_volume @f$V^0@f$.
+     */
+    static HoopTangent<dim>
+    hoop_tangent_times_volume(const Tensor<4, 3>          &M,
+                              const SymmetricTensor<2, 3> &tau,
+                              const double                 hoop_increment,
+                              const double                 initial_volume)
+    {
+      HoopTangent<dim> hoop;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          {
+            hoop.in_plane_by_hoop[i][j] = initial_volume * M[i][j][2][2];
+            hoop.hoop_by_in_plane[i][j] = initial_volume * M[2][2][i][j];
+          }
+      hoop.hoop_by_hoop =
+        initial_volume *
+        (M[2][2][2][2] - tau[2][2] / (hoop_increment * hoop_increment));
+      return hoop;
     }
   };
 } // namespace impm

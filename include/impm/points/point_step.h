@@ -40,12 +40,35 @@ namespace impm
     /** The inverse of the true increment (from the nodal displacements),
      *  which maps the gradients to the current configuration. */
     Tensor<2, dim> deformation_increment_inverse;
-    /** Initial volume @f$V_p^0@f$. */
+    /** Axisymmetry only: @f$1/r^n@f$, the inverse of the point's radius at
+     *  the start of the step (zero otherwise: no hoop terms). */
+    double inverse_radius = 0.;
+    /** Axisymmetry only: the hoop stretch of the current iterate,
+     *  @f$\Delta F_{\theta\theta} = 1 + \Delta u_r / r^n@f$ (1
+     *  otherwise). */
+    double hoop_increment = 1.;
+    /** Initial volume @f$V_p^0@f$ (in axisymmetry that of its ring). */
     double initial_volume;
     /** The point's material (of its body). */
     const Material *material;
     /** Constitutive result of the current iterate. */
     ConstitutiveUpdate update;
+
+    /**
+     * @brief The increment the material sees, 3x3: deformation_increment
+     * with the out-of-plane stretch hoop_increment (1 in plane strain).
+     */
+    Tensor<2, 3>
+    full_deformation_increment() const
+    {
+      Tensor<2, 3> full;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          full[i][j] = deformation_increment[i][j];
+      if constexpr (dim == 2)
+        full[2][2] = hoop_increment;
+      return full;
+    }
   };
 
 
