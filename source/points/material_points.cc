@@ -285,8 +285,7 @@ namespace impm
                       }
                   for (unsigned int d = 0; d < dim; ++d)
                     properties[P::initial_position + d] = position[d];
-                  // In axisymmetry the point is the ring it sweeps.
-                  properties[P::initial_volume] =
+                  properties[P::initial_volume] = // (its ring's)
                     volume * grid.ring_length(position);
                   properties[P::mass] =
                     body.density * properties[P::initial_volume];
@@ -385,8 +384,7 @@ namespace impm
       if (cell->is_locally_owned())
         {
           double volume = 0.;
-          // In axisymmetry a point's volume is that of its ring: the
-          // fill is of the plane.
+          // (In axisymmetry a point's volume is its ring's.)
           for (const auto &point : particle_handler.particles_in_cell(cell))
             volume += PointState<dim>(point.get_properties()).volume() /
                       grid.ring_length(point.get_location());
@@ -441,17 +439,15 @@ namespace impm
                 for (unsigned int a = 0; a < 3; ++a)
                   stretch += std::sqrt(eigen[a].first) * eigen[a].second[d] *
                              eigen[a].second[d];
-                // At most h/2: a domain then spans at most three nodes;
-                // in axisymmetry it stays off the axis.
-                double half_length = std::min(initial_half_length[d] * stretch,
-                                              0.5 * grid.cell_size[d]);
-                if (d == 0 && grid.axisymmetric)
-                  half_length = std::min(half_length, position[0]);
-                state.set_domain_half_length(d, half_length);
+                // At most h/2: a domain then spans at most three nodes.
+                state.set_domain_half_length(d,
+                                             std::min(initial_half_length[d] *
+                                                        stretch,
+                                                      0.5 * grid.cell_size[d]));
               }
           }
-        else if (grid.axisymmetric &&
-                 state.domain_half_length()[0] > position[0])
+        // In axisymmetry a domain stays off the axis.
+        if (grid.axisymmetric && state.domain_half_length()[0] > position[0])
           state.set_domain_half_length(0, position[0]);
 
         bool finite = true;
