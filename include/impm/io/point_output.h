@@ -18,6 +18,22 @@ namespace impm
   using namespace dealii;
 
   /**
+   * @brief Write one output step of a VTU series: each process with data
+   * (@p has_data) writes its piece `<stem>.<rank>.vtu` of @p data (under a
+   * temporary name, then renamed; a process without data writes none: an
+   * empty piece is not valid VTK), then rank 0 writes the record
+   * `<stem>.pvtu` naming the pieces. A process that cannot write stops all
+   * (run_collectively()). Collective; returns the record's file name.
+   */
+  template <int dim, int spacedim>
+  std::string
+  write_vtu_step(const DataOutInterface<dim, spacedim> &data,
+                 const bool                             has_data,
+                 const std::string                     &directory,
+                 const std::string                     &stem,
+                 const MPI_Comm                         communicator);
+
+  /**
    * @brief Writes material points with their fields for ParaView: as `.vtu`
    * pieces, a `.pvtu` record per output step and a `.pvd` time series, or
    * as one `.h5` file per output step (parallel HDF5, all processes into

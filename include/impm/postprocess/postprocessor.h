@@ -10,6 +10,7 @@
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
+#include <impm/points/point_step.h>
 #include <impm/postprocess/output_parameters.h>
 #include <impm/solver/newton_solver.h>
 #include <impm/solver/solver_parameters.h>
@@ -150,6 +151,26 @@ namespace impm
     log_line(const MeasureScales &scales) const;
   };
 
+  /**
+   * @brief The nodal state of a converged load step on the step's grid,
+   * after the couplings have accepted it and before the points move to its
+   * end: what Postprocessor::after_convergence() reads (grid output).
+   */
+  template <int dim>
+  struct ConvergedStep
+  {
+    /** The step's displacement increment (full numbering, ghosted). */
+    const NodalVector &increment;
+    /** The internal force with the couplings' forces (full numbering,
+     *  owned entries). */
+    const NodalVector &internal_force;
+    /** The external force of the step's end (full numbering, owned
+     *  entries). */
+    const NodalVector &external_force;
+    /** The points' supports and weights on the step's grid. */
+    const PointSteps<dim> &point_steps;
+  };
+
   /** @brief Totals over the run's load steps, for the summaries. */
   template <int dim>
   struct RunStatistics
@@ -242,6 +263,16 @@ namespace impm
     virtual void
     measure_step(const RunContext<dim> &context, StepRecord &record);
 
+    /**
+     * @brief Called for a converged step @p record before the points move
+     * (the step's grid and nodal vectors in @p step; nothing else is made
+     * for it), before measure_step() and after_step().
+     */
+    virtual void
+    after_convergence(const RunContext<dim>    &context,
+                      const StepRecord         &record,
+                      const ConvergedStep<dim> &step);
+
     /** @brief Called after every attempt, converged or cut. */
     virtual void
     after_step(const RunContext<dim>    &context,
@@ -300,6 +331,10 @@ namespace impm
      *  @p elapsed_wall_time of this run added to the wall time. */
     void
     save(RunState &state, const double elapsed_wall_time) const;
+
+    /** @brief See Postprocessor::after_convergence(). */
+    void
+    after_convergence(const StepRecord &record, const ConvergedStep<dim> &step);
 
     /** @brief Measure, count and write the attempt @p record. */
     void

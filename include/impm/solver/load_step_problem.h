@@ -143,6 +143,22 @@ namespace impm
       return displacement_increment;
     }
 
+    /** @brief The internal force of the current iterate with the
+     *  couplings' forces (full numbering, owned entries). */
+    const NodalVector &
+    internal_force_vector() const
+    {
+      return internal_force;
+    }
+
+    /** @brief The external force of the step's end (full numbering, owned
+     *  entries). */
+    const NodalVector &
+    external_force_vector() const
+    {
+      return external_force;
+    }
+
     /** @brief The reactions of the current iterate, per face and component,
      *  balanced with the load and the couplings' share of it
      *  (Coupling::force_from_material()). */
