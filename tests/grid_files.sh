@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# 'Output/Grid fields': nodal fields in the grid.pvd series beside the point
+# files, read back with VTK by tests/check_grid_files.py and checked against
+# numbers by hand:
+#  * the collapse (collapse_h1_4steps: an 8 m x 8 m block of density 1000
+#    under gravity 10 m/s^2 on a 16 x 8 grid of 1 m cells, rollers on x-
+#    and y-, steps cut on the way), every converged step written: the nodal
+#    mass sums to rho A = 1000 x 64 = 64000 kg/m; the external force to
+#    -lambda rho g A = -lambda 640000 N/m and the vertical reaction to
+#    +lambda 640000 (the weight at the step's load factor lambda:
+#    equilibrium); reactions only on the rollers' DoFs, where the
+#    displacement increment is zero; internal = external force elsewhere;
+#    only cells the points' supports cover (fewer than the 128 of the grid,
+#    every cell with a point at the step's start, none farther than a node
+#    from one); no velocity without inertia;
+#  * the vibrating bar with inertia (25 m x 1 m, density 1, 2 x 2 points per
+#    1 m cell: 100 points of 0.25 kg/m), shortened to 10 steps and written
+#    every 5: the series holds steps 5 and 10, the mass is 25 kg/m, and
+#    the grid's momentum sum_I M_I v_I equals the points' sum_p 0.25 v_p in
+#    the point files of the same steps (partition of unity);
+#  * on two processes the same checks, and every field of both runs equal
+#    to those of a run on one process (the same sums);
+#  * the default writes no grid file; velocity without inertia and grid
+#    fields with 'Output/Interval = 0' are refused with one line.
+# Usage: grid_files.sh IMPM TESTS_DIR [MPIEXEC N]
+tests=$2
+source "$(dirname "$0")/script_helpers.sh" "$@"
+check="/usr/bin/python3 $tests/check_grid_files.py"
+collapse=(--set "Output/Grid fields=all" --set "Output/Interval=1")
+bar=(--set "Time/End time=2" --set "Solver/Load steps=10"
+  --set "Output/Grid fields=all" --set "Output/Interval=5")
+
+"${launcher[@]}" "$impm" "$tests/collapse_h1_4steps.prm" "${collapse[@]}" \
+  --set "Output directory=collapse" > log.txt 2>&1 || fail "the collapse failed"
+$check collapse --mass 64000 --weight 640000 --grid-cells 128 ||
+  fail "the collapse's grid files"
+"${launcher[@]}" "$impm" "$tests/vibrating_bar.prm" "${bar[@]}" \
+  --set "Output directory=bar" > log.txt 2>&1 || fail "the bar failed"
+$check bar --mass 25 --momentum 0.25 --grid-cells 27 --steps 5,10 \
+  --held x=0,y=0,y=1 || fail "the bar's grid files"
+
+if [ ${#launcher[@]} -gt 0 ]; then
+  "$impm" "$tests/collapse_h1_4steps.prm" "${collapse[@]}" \
+    --set "Output directory=collapse_1" > log.txt 2>&1 ||
+    fail "the collapse on one process failed"
+  $check --compare collapse_1 collapse || fail "one and two processes differ"
+  "$impm" "$tests/vibrating_bar.prm" "${bar[@]}" \
+    --set "Output directory=bar_1" > log.txt 2>&1 ||
+    fail "the bar on one process failed"
+  $check --compare bar_1 bar || fail "one and two processes differ (bar)"
+  exit 0
+fi
+
+"$impm" "$tests/collapse_h1_4steps.prm" --set "Output/Interval=1" \
+  --set "Output directory=default" > log.txt 2>&1 || fail "the default run"
+ls default/grid* > /dev/null 2>&1 && fail "grid files without Grid fields"
+refused() {
+  "$impm" "$tests/collapse_h1_4steps.prm" "$@" \
+    --set "Output directory=refused" > log.txt 2>&1 && fail "accepted: $*"
+  [ "$(grep -c . log.txt)" = 1 ] || fail "not one line: $*"
+}
+refused --set "Output/Grid fields=velocity" --set "Output/Interval=1"
+grep -q "^Error: Output/Grid fields names velocity, which only a scene with \
+inertia has" log.txt || fail "the message on velocity without inertia"
+refused --set "Output/Grid fields=mass" --set "Output/Interval=0"
+grep -q "^Error: Output/Grid fields are written on the steps of the point \
+files" log.txt || fail "the message on Interval = 0"
+echo "grid_files: the grid fields are right"
