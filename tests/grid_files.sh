@@ -20,6 +20,8 @@
 #    the point files of the same steps (partition of unity);
 #  * on two processes the same checks, and every field of both runs equal
 #    to those of a run on one process (the same sums);
+#  * a run stopped after step 4 and resumed from its checkpoint writes
+#    the uninterrupted run's series and fields;
 #  * the default writes no grid file; velocity without inertia and grid
 #    fields with 'Output/Interval = 0' are refused with one line.
 # Usage: grid_files.sh IMPM TESTS_DIR [MPIEXEC N]
@@ -51,6 +53,13 @@ if [ ${#launcher[@]} -gt 0 ]; then
   exit 0
 fi
 
+"$impm" "$tests/collapse_h1_4steps.prm" "${collapse[@]}" \
+  --set "Checkpoint/Interval=1" --set "Output directory=resumed" \
+  --stop-after-step 4 > log.txt 2>&1 || fail "the run stopped after step 4"
+"$impm" "$tests/collapse_h1_4steps.prm" "${collapse[@]}" \
+  --set "Checkpoint/Interval=1" --set "Output directory=resumed" \
+  --resume > log.txt 2>&1 || fail "the resumed run"
+$check --compare collapse resumed || fail "the resumed run's grid files"
 "$impm" "$tests/collapse_h1_4steps.prm" --set "Output/Interval=1" \
   --set "Output directory=default" > log.txt 2>&1 || fail "the default run"
 ls default/grid* > /dev/null 2>&1 && fail "grid files without Grid fields"

@@ -313,30 +313,17 @@ namespace impm
 
 
 
-  template std::string
-  write_vtu_step(const DataOutInterface<0, 2> &,
-                 const bool,
-                 const std::string &,
-                 const std::string &,
-                 const MPI_Comm);
-  template std::string
-  write_vtu_step(const DataOutInterface<0, 3> &,
-                 const bool,
-                 const std::string &,
-                 const std::string &,
-                 const MPI_Comm);
-  template std::string
-  write_vtu_step(const DataOutInterface<2, 2> &,
-                 const bool,
-                 const std::string &,
-                 const std::string &,
-                 const MPI_Comm);
-  template std::string
-  write_vtu_step(const DataOutInterface<3, 3> &,
-                 const bool,
-                 const std::string &,
-                 const std::string &,
-                 const MPI_Comm);
+#define IMPM_INSTANTIATE(DIM, SPACEDIM)                                        \
+  template std::string write_vtu_step(const DataOutInterface<DIM, SPACEDIM> &, \
+                                      const bool,                              \
+                                      const std::string &,                     \
+                                      const std::string &,                     \
+                                      const MPI_Comm);
+  IMPM_INSTANTIATE(0, 2)
+  IMPM_INSTANTIATE(0, 3)
+  IMPM_INSTANTIATE(2, 2)
+  IMPM_INSTANTIATE(3, 3)
+#undef IMPM_INSTANTIATE
   template class PointOutput<2>;
   template class PointOutput<3>;
 } // namespace impm
