@@ -191,15 +191,16 @@ namespace impm
   void
   PointOutput<dim>::write_series(const std::string &file_name) const
   {
-    write_file_atomically(directory + "/" + file_name,
-                          [&](std::ostream &out) { write_pvd_record(out); });
+    write_file_atomically(directory + "/" + file_name, [&](std::ostream &out) {
+      write_pvd_series(out, series);
+    });
   }
 
 
 
-  template <int dim>
   void
-  PointOutput<dim>::write_pvd_record(std::ostream &out) const
+  write_pvd_series(std::ostream                                      &out,
+                   const std::vector<std::pair<double, std::string>> &series)
   {
     // Files of one step are its parts 0, 1, ...
     out << "<?xml version=\"1.0\"?>\n"

@@ -89,15 +89,14 @@ namespace impm
         const auto steps = state.get_list("grid files.steps");
         series.clear();
         for (unsigned int i = 0; i < times.size() && i < steps.size(); ++i)
-          series.emplace_back(times[i],
-                              record_name(static_cast<unsigned int>(steps[i])));
+          series.emplace_back(times[i], static_cast<unsigned int>(steps[i]));
       }
 
       void
       save(const RunContext<dim> &, RunState &state) const override
       {
         std::vector<double> times, steps;
-        for (const auto &[time, step] : written_steps())
+        for (const auto &[time, step] : series)
           {
             times.push_back(time);
             steps.push_back(step);
@@ -123,16 +122,6 @@ namespace impm
       record_name(const unsigned int step)
       {
         return "grid_" + Utilities::int_to_string(step, 5) + ".pvtu";
-      }
-
-      /** The series' load factors and step numbers. */
-      std::vector<std::pair<double, double>>
-      written_steps() const
-      {
-        std::vector<std::pair<double, double>> steps;
-        for (const auto &[time, file] : series)
-          steps.emplace_back(time, std::stod(file.substr(5, 5)));
-        return steps;
       }
 
       /** A ghosted copy of @p owned (owned entries only) on @p grid. */
@@ -290,20 +279,22 @@ namespace impm
           });
         data_out.build_patches();
 
-        const std::string record_file =
-          write_vtu_step(data_out,
-                         n_written > 0,
-                         directory,
-                         "grid_" +
-                           Utilities::int_to_string(record.step_number, 5),
-                         communicator);
+        write_vtu_step(data_out,
+                       n_written > 0,
+                       directory,
+                       "grid_" +
+                         Utilities::int_to_string(record.step_number, 5),
+                       communicator);
+        series.emplace_back(record.target, record.step_number);
         run_collectively(communicator, [&]() {
           if (Utilities::MPI::this_mpi_process(communicator) != 0)
             return;
-          series.emplace_back(record.target, record_file);
+          std::vector<std::pair<double, std::string>> files;
+          for (const auto &[time, step] : series)
+            files.emplace_back(time, record_name(step));
           write_file_atomically(directory + "/grid.pvd",
-                                [this](std::ostream &out) {
-                                  DataOutBase::write_pvd_record(out, series);
+                                [&files](std::ostream &out) {
+                                  write_pvd_series(out, files);
                                 });
         });
       }
@@ -314,8 +305,8 @@ namespace impm
       const MPI_Comm                 communicator;
       /** The mass as a scalar field. */
       const FirstComponent<dim> mass_field;
-      /** The series: load factor and record (rank 0). */
-      std::vector<std::pair<double, std::string>> series;
+      /** The series: load factor and step number of each record. */
+      std::vector<std::pair<double, unsigned int>> series;
     };
   } // namespace
   IMPM_REGISTER_POSTPROCESSOR(GridFiles,

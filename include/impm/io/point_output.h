@@ -34,6 +34,15 @@ namespace impm
                  const MPI_Comm                         communicator);
 
   /**
+   * @brief Write the `.pvd` record of a series of (time, file) pairs in
+   * their order: consecutive files of one time are the parts 0, 1, ... of
+   * its step; times to 16 digits.
+   */
+  void
+  write_pvd_series(std::ostream                                      &out,
+                   const std::vector<std::pair<double, std::string>> &series);
+
+  /**
    * @brief Writes material points with their fields for ParaView: as `.vtu`
    * pieces, a `.pvtu` record per output step and a `.pvd` time series, or
    * as one `.h5` file per output step (parallel HDF5, all processes into
@@ -108,11 +117,6 @@ namespace impm
     /** @brief write() for the vtu format. */
     void
     write_vtu_files(const double time, const std::string &stem);
-
-    /** @brief The `.pvd` record of the series, with each step's files as
-     *  its parts. */
-    void
-    write_pvd_record(std::ostream &out) const;
 
     /** @brief Add the files other_parts() writes for the output step
      *  @p stem to the series at @p time (rank 0). */
