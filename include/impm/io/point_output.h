@@ -75,6 +75,7 @@ namespace impm
      * @brief Start a new output step with @p n_points points on this process
      * and the given field layout.
      *
+     * @param n_points The points of this process.
      * @param names One name per scalar component; vector fields repeat their
      *   name for each component.
      * @param is_vector Whether each component is part of a vector field.

@@ -48,7 +48,9 @@ namespace impm
         /** The declared fields named (checked against the scene's once
          *  its points are laid out). */
         std::vector<std::string> declared;
-      } fields;
+      };
+      /** The point files' fields. */
+      Fields fields;
 
       /** @brief The nodal fields written to the grid files (GridFiles in
        *  postprocess/grid_files.cc; none of them: no grid files). */
@@ -77,7 +79,9 @@ namespace impm
           return displacement_increment || mass || internal_force ||
                  external_force || reaction || velocity;
         }
-      } grid_fields;
+      };
+      /** The grid files' fields. */
+      GridFields grid_fields;
 
       /** @brief Declare the entries in subsection "Output". */
       static void

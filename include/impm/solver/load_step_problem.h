@@ -42,7 +42,13 @@ namespace impm
   public:
     /**
      * @brief The problem over the parts of a run.
+     * @param grid The background grid.
+     * @param system The load step's system (numbering, matrix, vectors).
+     * @param assembler The stress update, forces and matrix.
      * @param couplings The scene's couplings.
+     * @param linear_solver The linear solver.
+     * @param timer The solver's phase timer ("stress update", "assembly",
+     *   "linear solve").
      */
     LoadStepProblem(const BackgroundGrid<dim> &grid,
                     LoadStepSystem<dim>       &system,
