@@ -17,7 +17,11 @@
 #    1 m cell: 100 points of 0.25 kg/m), shortened to 10 steps and written
 #    every 5: the series holds steps 5 and 10, the mass is 25 kg/m, and
 #    the grid's momentum sum_I M_I v_I equals the points' sum_p 0.25 v_p in
-#    the point files of the same steps (partition of unity);
+#    the point files of the same steps (partition of unity); the same for
+#    the column of column_gimp_elastic_8 (6.25 m x 50 m, density 80:
+#    25000 kg/m, 32 points of 781.25 kg/m) under its weight at once with
+#    explicit MUSL steps (no equilibrium check: its internal force holds
+#    no inertia);
 #  * on two processes the same checks, and every field of both runs equal
 #    to those of a run on one process (the same sums);
 #  * a run stopped after step 4 and resumed from its checkpoint writes
@@ -40,6 +44,19 @@ $check collapse --mass 64000 --weight 640000 --grid-cells 128 ||
   --set "Output directory=bar" > log.txt 2>&1 || fail "the bar failed"
 $check bar --mass 25 --momentum 0.25 --grid-cells 27 --steps 5,10 \
   --held x=0,y=0,y=1 || fail "the bar's grid files"
+# The column of column_gimp_elastic_8 (6.25 m x 50 m, density 80: 25000
+# kg/m in 32 points of 781.25 kg/m) under its full weight at once, explicit
+# (MUSL), 100 steps written every 50: mass and momentum as for the bar.
+explicit=(--set "Gravity/Ramped=false" --set "Time/End time=2"
+  --set "Time/Time step=0.02" --set "Inertia/Enabled=true"
+  --set "Inertia/Integrator=explicit MUSL" --set "Output/Grid fields=all"
+  --set "Output/Interval=50")
+"${launcher[@]}" "$impm" "$tests/column_gimp_elastic_8.prm" "${explicit[@]}" \
+  --set "Output directory=explicit" > log.txt 2>&1 ||
+  fail "the explicit column failed"
+$check explicit --mass 25000 --momentum 781.25 --cell-size 6.25 \
+  --steps 50,100 --held x=0,x=6.25,y=0 --explicit ||
+  fail "the explicit column's grid files"
 
 if [ ${#launcher[@]} -gt 0 ]; then
   "$impm" "$tests/collapse_h1_4steps.prm" "${collapse[@]}" \
@@ -50,6 +67,11 @@ if [ ${#launcher[@]} -gt 0 ]; then
     --set "Output directory=bar_1" > log.txt 2>&1 ||
     fail "the bar on one process failed"
   $check --compare bar_1 bar || fail "one and two processes differ (bar)"
+  "$impm" "$tests/column_gimp_elastic_8.prm" "${explicit[@]}" \
+    --set "Output directory=explicit_1" > log.txt 2>&1 ||
+    fail "the explicit column on one process failed"
+  $check --compare explicit_1 explicit ||
+    fail "one and two processes differ (explicit)"
   exit 0
 fi
 
