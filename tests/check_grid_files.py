@@ -2,22 +2,24 @@
 numbers given on the command line (computed by hand in grid_files.sh) and
 the run's point files; used by tests/grid_files.sh.
 
-  check_grid_files.py DIR --mass M --weight W
+  check_grid_files.py DIR --mass M [--weight W] [options]
       every grid file of DIR/grid.pvd: the series at the load factors of
       the converged steps of steps.csv (or only those given by --steps);
       every node written carries mass and their sum (each node once) is M;
-      the external force sums to -lambda W and the vertical reaction to
-      +lambda W (lambda: the step's load factor; the loads ramp with it);
-      the reaction is zero off the rollers' nodes (--held: x=0,y=0 by
-      default: the x component on x = 0, the y component on y = 0) and the
-      displacement increment is zero on them; internal = external force on the other DoFs (equilibrium);
-      each cell is written once, fewer cells than the grid's (--grid-cells
-      N, if given), every cell
-      holding a point at the step's start (the point file of the step
-      before, where there is one) is written and every written cell shares
-      a node with such a cell; with --momentum P (the points' mass, equal for all), the grid's
-      momentum sum_I M_I v_I equals sum_p P v_p of the point file of the
-      same step; without it, no velocity field.
+      with W, the external force sums to -lambda W and the vertical
+      reaction to +lambda W (lambda: the step's load factor; the loads ramp
+      with it); the reaction is zero off the rollers' nodes (--held:
+      x=0,y=0 by default: the x component on x = 0, the y component on
+      y = 0) and the displacement increment is zero on them; internal =
+      external force on the other DoFs (equilibrium; not with --explicit:
+      an explicit step's internal force holds no inertial force); each cell
+      is written once, fewer cells than the grid's (--grid-cells N, if
+      given), every cell holding a point at the step's start (the point
+      file of the step before, where there is one) is written and every
+      written cell shares a node with such a cell; with --momentum P (the
+      points' mass, equal for all), the grid's momentum sum_I M_I v_I
+      equals sum_p P v_p of the point file of the same step; without it,
+      no velocity field. --dim 3: a 3D run (z the vertical axis).
   check_grid_files.py --compare DIR1 DIR2
       the two runs' grid files (one and two processes) hold the same nodes
       with the same values.
@@ -26,6 +28,7 @@ Data are single precision (deal.II 9.4's VTU writer): sums are compared to
 """
 import argparse
 import csv
+import itertools
 import os
 import sys
 import xml.etree.ElementTree as ET
@@ -54,7 +57,7 @@ def read(file_name):
     """Nodes (each once: positions, field arrays) and cells (as lists of
     node indices) of a .pvtu file of grid fields."""
     grid = unstructured(file_name)
-    positions = vtk_to_numpy(grid.GetPoints().GetData())[:, :2].astype(float)
+    positions = vtk_to_numpy(grid.GetPoints().GetData())[:, :DIM].astype(float)
     keys = np.round(positions * 1e4).astype(np.int64)
     unique, first, inverse = np.unique(keys, axis=0, return_index=True,
                                        return_inverse=True)
@@ -81,7 +84,7 @@ def read_points(file_name):
     data = grid.GetPointData()
     fields = {data.GetArray(i).GetName(): vtk_to_numpy(data.GetArray(i))
               for i in range(data.GetNumberOfArrays())}
-    return vtk_to_numpy(grid.GetPoints().GetData())[:, :2], fields
+    return vtk_to_numpy(grid.GetPoints().GetData())[:, :DIM], fields
 
 
 def check_run(args):
@@ -106,18 +109,19 @@ def check_run(args):
         check(abs(f["mass"].sum() - M) <= 1e-5 * M,
               where + "mass %.8g, expected %.8g" % (f["mass"].sum(), M))
         if W > 0.:
-            check(abs(f["external_force"][:, 1].sum() + W) <= 1e-5 * W,
+            up = DIM - 1
+            check(abs(f["external_force"][:, up].sum() + W) <= 1e-5 * W,
                   where + "external force %.8g, expected %.8g"
-                  % (f["external_force"][:, 1].sum(), -W))
-            check(abs(f["reaction"][:, 1].sum() - W) <= 1e-5 * W,
+                  % (f["external_force"][:, up].sum(), -W))
+            check(abs(f["reaction"][:, up].sum() - W) <= 1e-5 * W,
                   where + "vertical reaction %.8g, expected %.8g"
-                  % (f["reaction"][:, 1].sum(), W))
-        on_face = [np.zeros(len(X), bool), np.zeros(len(X), bool)]
+                  % (f["reaction"][:, up].sum(), W))
+        on_face = [np.zeros(len(X), bool) for d in range(DIM)]
         for face in args.held.split(","):
-            d, value = "xy".index(face[0]), float(face[2:])
+            d, value = "xyz".index(face[0]), float(face[2:])
             on_face[d] |= np.abs(X[:, d] - value) < 1e-6
         scale = max(W, np.abs(f["internal_force"]).max())
-        for d in range(2):
+        for d in range(DIM):
             check(np.all(f["reaction"][~on_face[d], d] == 0.),
                   where + "a reaction off the face held in direction %d" % d)
             check(np.all(f["displacement_increment"][on_face[d], d] == 0.),
@@ -142,8 +146,8 @@ def check_run(args):
             held = {tuple(c) for c in np.floor(start / h).astype(int)}
             check(held <= corners, where + "cells with points not written: %s"
                   % sorted(held - corners))
-            near = {(i + a, j + b) for i, j in held
-                    for a in (-1, 0, 1) for b in (-1, 0, 1)}
+            near = {tuple(np.add(cell, shift)) for cell in held
+                    for shift in itertools.product((-1, 0, 1), repeat=DIM)}
             check(corners <= near,
                   where + "cells written away from the points: %s"
                   % sorted(corners - near))
@@ -151,11 +155,10 @@ def check_run(args):
             check("velocity" not in f, where + "a velocity without inertia")
             continue
         _, pf = read_points(os.path.join(directory, "points_%05d.pvtu" % step))
-        points = np.array([pf["velocity_0"].sum(), pf["velocity_1"].sum()]) \
-            * args.momentum
-        grid = (f["mass"][:, None] * f["velocity"][:, :2]).sum(axis=0)
-        scale = args.momentum * (np.abs(pf["velocity_0"]).sum() +
-                                 np.abs(pf["velocity_1"]).sum())
+        v = [pf["velocity_%d" % d] for d in range(DIM)]
+        points = args.momentum * np.array([c.sum() for c in v])
+        grid = (f["mass"][:, None] * f["velocity"][:, :DIM]).sum(axis=0)
+        scale = args.momentum * sum(np.abs(c).sum() for c in v)
         check(np.all(np.abs(grid - points) <= 1e-5 * scale),
               where + "momentum on the grid %s, of the points %s"
               % (grid, points))
@@ -193,7 +196,9 @@ parser.add_argument("--grid-cells", type=int)
 parser.add_argument("--steps")
 parser.add_argument("--held", default="x=0,y=0")
 parser.add_argument("--explicit", action="store_true")
+parser.add_argument("--dim", type=int, default=2)
 arguments = parser.parse_args()
+DIM = arguments.dim
 if arguments.compare:
     compare(*arguments.compare)
 else:

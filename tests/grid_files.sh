@@ -22,6 +22,10 @@
 #    25000 kg/m, 32 points of 781.25 kg/m) under its weight at once with
 #    explicit MUSL steps (no equilibrium check: its internal force holds
 #    no inertia);
+#  * in 3D, the column of column_3d_gimp_plastic_8 (6.25 x 6.25 x 50 m,
+#    density 80, g = 10, rollers on five faces), every 10th of 50 steps:
+#    the mass 156250 kg, the vertical reaction lambda 1562500 N, and the
+#    rest as for the collapse;
 #  * on two processes the same checks, and every field of both runs equal
 #    to those of a run on one process (the same sums);
 #  * a run stopped after step 4 and resumed from its checkpoint writes
@@ -57,6 +61,16 @@ explicit=(--set "Gravity/Ramped=false" --set "Time/End time=2"
 $check explicit --mass 25000 --momentum 781.25 --cell-size 6.25 \
   --steps 50,100 --held x=0,x=6.25,y=0 --explicit ||
   fail "the explicit column's grid files"
+# In 3D: the column of column_3d_gimp_plastic_8 (6.25 m x 6.25 m x 50 m,
+# density 80, g = 10: 156250 kg and 1562500 N; rollers on x-, x+, y-, y+,
+# z-), 50 load steps written every 10.
+column3d=(--set "Output/Grid fields=all" --set "Output/Interval=10")
+"${launcher[@]}" "$impm" "$tests/column_3d_gimp_plastic_8.prm" \
+  "${column3d[@]}" --set "Output directory=column3d" > log.txt 2>&1 ||
+  fail "the 3D column failed"
+$check column3d --dim 3 --mass 156250 --weight 1562500 --cell-size 6.25 \
+  --steps 10,20,30,40,50 --held x=0,x=6.25,y=0,y=6.25,z=0 ||
+  fail "the 3D column's grid files"
 
 if [ ${#launcher[@]} -gt 0 ]; then
   "$impm" "$tests/collapse_h1_4steps.prm" "${collapse[@]}" \
@@ -72,6 +86,11 @@ if [ ${#launcher[@]} -gt 0 ]; then
     fail "the explicit column on one process failed"
   $check --compare explicit_1 explicit ||
     fail "one and two processes differ (explicit)"
+  "$impm" "$tests/column_3d_gimp_plastic_8.prm" "${column3d[@]}" \
+    --set "Output directory=column3d_1" > log.txt 2>&1 ||
+    fail "the 3D column on one process failed"
+  $check --compare column3d_1 column3d --dim 3 ||
+    fail "one and two processes differ (3D)"
   exit 0
 fi
 
