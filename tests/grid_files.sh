@@ -30,6 +30,8 @@
 #    to those of a run on one process (the same sums);
 #  * a run stopped after step 4 and resumed from its checkpoint writes
 #    the uninterrupted run's series and fields;
+#  * a grid piece that cannot be written (on two processes only the second
+#    process's) stops the run with one error line naming it;
 #  * the default writes no grid file; velocity without inertia and grid
 #    fields with 'Output/Interval = 0' are refused with one line.
 # Usage: grid_files.sh IMPM TESTS_DIR [MPIEXEC N]
@@ -71,6 +73,21 @@ column3d=(--set "Output/Grid fields=all" --set "Output/Interval=10")
 $check column3d --dim 3 --mass 156250 --weight 1562500 --cell-size 6.25 \
   --steps 10,20,30,40,50 --held x=0,x=6.25,y=0,y=6.25,z=0 ||
   fail "the 3D column's grid files"
+
+# A grid piece that cannot be written (a directory of its name; on two
+# processes the second one's piece, so that one process fails alone): one
+# error line naming it, and no hang.
+piece=grid_00002.0000.vtu
+[ ${#launcher[@]} -gt 0 ] && piece=grid_00002.0001.vtu
+mkdir -p unwritable/$piece
+timeout 120 "${launcher[@]}" "$impm" "$tests/collapse_h1_4steps.prm" \
+  "${collapse[@]}" --set "Output directory=unwritable" > log.txt 2>&1
+status=$?
+[ $status -eq 124 ] && fail "a grid piece that cannot be written: no exit"
+[ $status -eq 0 ] && fail "a grid piece that cannot be written: no error"
+[ "$(grep -c '^Error: ' log.txt)" = 1 ] &&
+  grep -q "^Error: .*unwritable/$piece" log.txt ||
+  fail "not one error line naming the grid piece"
 
 if [ ${#launcher[@]} -gt 0 ]; then
   "$impm" "$tests/collapse_h1_4steps.prm" "${collapse[@]}" \
