@@ -8,6 +8,7 @@
 #include <impm/io/atomic_file.h>
 #include <impm/io/point_output.h>
 #include <impm/postprocess/postprocessor.h>
+#include <impm/solver/load_step_problem.h>
 
 #include <string>
 #include <utility>

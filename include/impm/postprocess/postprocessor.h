@@ -10,7 +10,6 @@
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
-#include <impm/points/point_step.h>
 #include <impm/postprocess/output_parameters.h>
 #include <impm/solver/newton_solver.h>
 #include <impm/solver/solver_parameters.h>
@@ -157,25 +156,9 @@ namespace impm
     log_line(const MeasureScales &scales) const;
   };
 
-  /**
-   * @brief The nodal state of a converged load step on the step's grid,
-   * after the couplings have accepted it and before the points move to its
-   * end: what Postprocessor::after_convergence() reads (grid output).
-   */
+  // The nodal state of a converged step (solver/load_step_problem.h).
   template <int dim>
-  struct ConvergedStep
-  {
-    /** The step's displacement increment (full numbering, ghosted). */
-    const NodalVector &increment;
-    /** The internal force with the couplings' forces (full numbering,
-     *  owned entries). */
-    const NodalVector &internal_force;
-    /** The external force of the step's end (full numbering, owned
-     *  entries). */
-    const NodalVector &external_force;
-    /** The points' supports and weights on the step's grid. */
-    const PointSteps<dim> &point_steps;
-  };
+  struct ConvergedStep;
 
   /** @brief Totals over the run's load steps, for the summaries. */
   template <int dim>

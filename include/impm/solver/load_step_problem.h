@@ -25,6 +25,26 @@ namespace impm
   using namespace dealii;
 
   /**
+   * @brief The nodal state of a converged load step on the step's grid,
+   * after the couplings have accepted it and before the points move to its
+   * end: what Postprocessor::after_convergence() reads (grid output).
+   */
+  template <int dim>
+  struct ConvergedStep
+  {
+    /** The step's displacement increment (full numbering, ghosted). */
+    const NodalVector &increment;
+    /** The internal force with the couplings' forces (full numbering,
+     *  owned entries). */
+    const NodalVector &internal_force;
+    /** The external force of the step's end (full numbering, owned
+     *  entries). */
+    const NodalVector &external_force;
+    /** The points' supports and weights on the step's grid. */
+    const PointSteps<dim> &point_steps;
+  };
+
+  /**
    * @brief The equilibrium of one load step as a NonlinearProblem: the
    * displacement increment from the start of the step is the unknown, the
    * residual is f_ext - f_int on the DoFs of the linear system, with the
@@ -149,20 +169,15 @@ namespace impm
       return displacement_increment;
     }
 
-    /** @brief The internal force of the current iterate with the
-     *  couplings' forces (full numbering, owned entries). */
-    const NodalVector &
-    internal_force_vector() const
+    /** @brief The step's nodal state at the current iterate, for output
+     *  of a converged step (Postprocessor::after_convergence()). */
+    ConvergedStep<dim>
+    converged_step() const
     {
-      return internal_force;
-    }
-
-    /** @brief The external force of the step's end (full numbering, owned
-     *  entries). */
-    const NodalVector &
-    external_force_vector() const
-    {
-      return external_force;
+      return {displacement_increment,
+              internal_force,
+              external_force,
+              system.point_steps};
     }
 
     /** @brief The reactions of the current iterate, per face and component,
