@@ -70,7 +70,8 @@ namespace impm
         "mass; 'all' includes it only there). Each written at the end of a "
         "converged step on the step's grid, before the points move; only "
         "the cells whose every node carries mass (the cells the points' "
-        "supports cover) are written.");
+        "supports cover) are written; VTU whatever 'Format', in single "
+        "precision (deal.II 9.4).");
       prm.declare_entry("Quiet",
                         "false",
                         Patterns::Bool(),
