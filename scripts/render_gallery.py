@@ -111,15 +111,22 @@ def colour_map(pv, scene):
     return lut
 
 
-def render(pv, scene, files, png):
+def white_view(pv, size):
+    """A render view of SIZE pixels on white, without orientation axes
+    (also used by doc/scripts/render_grid_fields.py)."""
     view = pv.CreateRenderView()
-    view.ViewSize = SIZE
+    view.ViewSize = size
     try:
         view.UseColorPaletteForBackground = 0
     except AttributeError:
         pass
     view.Background = [1, 1, 1]
     view.OrientationAxesVisibility = 0
+    return view
+
+
+def render(pv, scene, files, png):
+    view = white_view(pv, SIZE)
 
     if scene["grid"]:
         x0, x1, y0, y1 = scene["grid"]

@@ -116,46 +116,58 @@ namespace impm
 
 
 
+  template <int dim, int spacedim>
+  std::string
+  write_vtu_step(const DataOutInterface<dim, spacedim> &data,
+                 const bool                             has_data,
+                 const std::string                     &directory,
+                 const std::string                     &stem,
+                 const MPI_Comm                         communicator)
+  {
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    const std::vector<unsigned int> with_data =
+      Utilities::MPI::gather(communicator,
+                             static_cast<unsigned int>(has_data),
+                             0);
+    const std::string piece =
+      stem + "." + Utilities::int_to_string(rank, 4) + ".vtu";
+    // All pieces exist before the record that names them.
+    run_collectively(communicator, [&]() {
+      if (has_data)
+        write_file_atomically(directory + "/" + piece,
+                              [&data](std::ostream &out) {
+                                data.write_vtu(out);
+                              });
+    });
+    run_collectively(communicator, [&]() {
+      if (rank != 0)
+        return;
+      std::vector<std::string> pieces;
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        if (with_data[r] > 0)
+          pieces.push_back(stem + "." + Utilities::int_to_string(r, 4) +
+                           ".vtu");
+      write_file_atomically(directory + "/" + stem + ".pvtu",
+                            [&](std::ostream &out) {
+                              data.write_pvtu_record(out, pieces);
+                            });
+    });
+    return stem + ".pvtu";
+  }
+
+
+
   template <int dim>
   void
   PointOutput<dim>::write_vtu_files(const double time, const std::string &stem)
   {
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
-
-    // Each process with points writes its piece under a temporary name,
-    // then renames it; a process without points writes none (an empty piece
-    // is not valid VTK).
-    const std::vector<unsigned int> counts =
-      Utilities::MPI::gather(communicator,
-                             static_cast<unsigned int>(patches.size()),
-                             0);
-    const std::string piece =
-      stem + "." + Utilities::int_to_string(rank, 4) + ".vtu";
-    // All pieces exist before the records that name them; a process that
-    // cannot write its piece stops all.
+    const std::string record =
+      write_vtu_step(*this, !patches.empty(), directory, stem, communicator);
     run_collectively(communicator, [&]() {
-      if (!patches.empty())
-        write_file_atomically(directory + "/" + piece,
-                              [this](std::ostream &out) {
-                                this->write_vtu(out);
-                              });
-    });
-
-    run_collectively(communicator, [&]() {
-      if (rank == 0)
+      if (Utilities::MPI::this_mpi_process(communicator) == 0)
         {
-          std::vector<std::string> pieces;
-          for (unsigned int r = 0; r < n_ranks; ++r)
-            if (counts[r] > 0)
-              pieces.push_back(stem + "." + Utilities::int_to_string(r, 4) +
-                               ".vtu");
-          write_file_atomically(directory + "/" + stem + ".pvtu",
-                                [&](std::ostream &out) {
-                                  this->write_pvtu_record(out, pieces);
-                                });
-
-          series.emplace_back(time, stem + ".pvtu");
+          series.emplace_back(time, record);
           add_other_parts(time, stem);
           write_series(base_name + ".pvd");
         }
@@ -179,15 +191,16 @@ namespace impm
   void
   PointOutput<dim>::write_series(const std::string &file_name) const
   {
-    write_file_atomically(directory + "/" + file_name,
-                          [&](std::ostream &out) { write_pvd_record(out); });
+    write_file_atomically(directory + "/" + file_name, [&](std::ostream &out) {
+      write_pvd_series(out, series);
+    });
   }
 
 
 
-  template <int dim>
   void
-  PointOutput<dim>::write_pvd_record(std::ostream &out) const
+  write_pvd_series(std::ostream                                      &out,
+                   const std::vector<std::pair<double, std::string>> &series)
   {
     // Files of one step are its parts 0, 1, ...
     out << "<?xml version=\"1.0\"?>\n"
@@ -301,6 +314,17 @@ namespace impm
 
 
 
+#define IMPM_INSTANTIATE(DIM, SPACEDIM)                                        \
+  template std::string write_vtu_step(const DataOutInterface<DIM, SPACEDIM> &, \
+                                      const bool,                              \
+                                      const std::string &,                     \
+                                      const std::string &,                     \
+                                      const MPI_Comm);
+  IMPM_INSTANTIATE(0, 2)
+  IMPM_INSTANTIATE(0, 3)
+  IMPM_INSTANTIATE(2, 2)
+  IMPM_INSTANTIATE(3, 3)
+#undef IMPM_INSTANTIATE
   template class PointOutput<2>;
   template class PointOutput<3>;
 } // namespace impm

@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/errors.h>
 #include <impm/postprocess/output_parameters.h>
 
 #include <algorithm>
@@ -50,6 +51,27 @@ namespace impm
         "(scenes with several bodies only) and the state the scene's "
         "materials declare: plastic_multiplier (the plastic models). A name "
         "the scene's points do not store is an error.");
+      prm.declare_entry(
+        "Grid fields",
+        "",
+        Patterns::List(Patterns::Selection(
+                         "all|displacement_increment|mass|internal_force|"
+                         "external_force|reaction|velocity"),
+                       0,
+                       7),
+        "Nodal fields written to grid files beside the point files (the "
+        "grid.pvd series of grid_NNNNN.pvtu records, one .vtu piece per "
+        "process, on the steps the point files are written after the "
+        "start): empty for none (nothing is computed), all, or a list of "
+        "displacement_increment (the load step's), mass (lumped), "
+        "internal_force, external_force, reaction (internal minus external "
+        "force on the DoFs a face condition holds, zero elsewhere) and "
+        "velocity (scenes with inertia only: the points' momentum over the "
+        "mass; 'all' includes it only there). Each written at the end of a "
+        "converged step on the step's grid, before the points move; only "
+        "the cells whose every node carries mass (the cells the points' "
+        "supports cover) are written; VTU whatever 'Format', in single "
+        "precision (deal.II 9.4).");
       prm.declare_entry("Quiet",
                         "false",
                         Patterns::Bool(),
@@ -100,7 +122,29 @@ namespace impm
       for (const auto &name : names)
         if (std::find(built_in.begin(), built_in.end(), name) == built_in.end())
           fields.declared.push_back(name);
+      parse_grid_fields(Utilities::split_string_list(prm.get("Grid fields")));
       prm.leave_subsection();
+    }
+
+
+
+    void
+    Output::parse_grid_fields(const std::vector<std::string> &names)
+    {
+      const auto named = [&names](const std::string &field) {
+        return std::find(names.begin(), names.end(), field) != names.end();
+      };
+      grid_fields.all = named("all");
+      grid_fields.displacement_increment =
+        grid_fields.all || named("displacement_increment");
+      grid_fields.mass           = grid_fields.all || named("mass");
+      grid_fields.internal_force = grid_fields.all || named("internal_force");
+      grid_fields.external_force = grid_fields.all || named("external_force");
+      grid_fields.reaction       = grid_fields.all || named("reaction");
+      grid_fields.velocity       = named("velocity");
+      if (grid_fields.any() && interval == 0)
+        throw InputError("Output/Grid fields are written on the steps of the "
+                         "point files: set 'Output/Interval' above 0.");
     }
 
 

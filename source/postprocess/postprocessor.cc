@@ -195,6 +195,15 @@ namespace impm
 
   template <int dim>
   void
+  Postprocessor<dim>::after_convergence(const RunContext<dim> &,
+                                        const StepRecord &,
+                                        const ConvergedStep<dim> &)
+  {}
+
+
+
+  template <int dim>
+  void
   Postprocessor<dim>::after_step(const RunContext<dim> &,
                                  const StepRecord &,
                                  const RunStatistics<dim> &)
@@ -287,6 +296,20 @@ namespace impm
     so_far.save(state);
     for (const auto &postprocessor : postprocessors)
       postprocessor->save(context, state);
+  }
+
+
+
+  template <int dim>
+  void
+  PostprocessorManager<dim>::after_convergence(const StepRecord         &record,
+                                               const ConvergedStep<dim> &step)
+  {
+    // Not wrapped in run_collectively(), which would cost a collective
+    // operation per postprocessor and step: a postprocessor that writes
+    // here wraps its writes itself (only the grid files do).
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->after_convergence(context, record, step);
   }
 
 

@@ -461,6 +461,7 @@ namespace impm
     const auto reactions      = problem.reactions();
     record.reactions          = reactions.by_column;
     record.reaction_imbalance = reactions.imbalance;
+    postprocessors->after_convergence(record, problem.converged_step());
     TimerOutput::Scope scope(timer, "point update");
     material_points.advance(system.point_steps,
                             problem.increment(),

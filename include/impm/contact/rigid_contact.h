@@ -166,6 +166,7 @@ namespace impm
      * and @p target) become this attempt's probes.
      * @param material_points The points at the start of the step.
      * @param system The step's system (its point steps and face weights).
+     * @param start, target The load factors at the step's start and target.
      */
     void
     begin(const MaterialPoints<dim> &material_points,

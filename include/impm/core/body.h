@@ -47,6 +47,7 @@ namespace impm
      * @brief Declare the entries of a shape (Shape, Lower corner, Upper
      * corner, Center, Radius, Vertices) in the current subsection: shared by
      * the bodies and the rigid bodies.
+     * @param prm The scene's parameters, in the body's subsection.
      * @param extra_shapes Further names for the Shape selection (the rigid
      * bodies' "|cone"), parsed by the caller.
      */
@@ -159,8 +160,10 @@ namespace impm
 
     /** The body's shape. */
     Shape shape = Shape::box;
-    /** Box corners. */
-    Point<dim> lower_corner, upper_corner;
+    /** Box: the lower corner. */
+    Point<dim> lower_corner;
+    /** Box: the upper corner. */
+    Point<dim> upper_corner;
     /** Disc or sphere centre; a cylinder's base centre. */
     Point<dim> center;
     /** Disc, sphere or cylinder radius. */

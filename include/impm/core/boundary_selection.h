@@ -46,6 +46,8 @@ namespace impm
     /**
      * @brief Declare `Body`, `Boundary`, `Region lower corner` and `Region
      * upper corner` in the current subsection.
+     * @param prm The scene's parameters, in the subsection of the effect or
+     *   coupling that selects the boundary.
      * @param verb What happens to the boundary ("loaded", "supported").
      */
     static void

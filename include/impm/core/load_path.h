@@ -61,10 +61,14 @@ namespace impm
    */
   struct StepSpan
   {
-    /** The load factor at the step's start and end. */
-    double start = 0., target = 0.;
-    /** The time at the step's start and end. */
-    double start_time = 0., end_time = 0.;
+    /** The load factor at the step's start. */
+    double start = 0.;
+    /** The load factor at the step's end. */
+    double target = 0.;
+    /** The time at the step's start. */
+    double start_time = 0.;
+    /** The time at the step's end. */
+    double end_time = 0.;
 
     /** @brief The step's duration. */
     double

@@ -91,6 +91,11 @@ namespace impm
      * (local DoFs): @f$v_p = \phi\,(v_p + \sum_I N_{Ip}\,\Delta v_I) + (1 -
      * \phi) \sum_I N_{Ip}\, v_I^{n+1}@f$ (FLIP fraction @f$\phi@f$),
      * @f$a_p = \sum_I N_{Ip}\, a_I@f$.
+     * @param material_points The points (their velocity at the start).
+     * @param steps The points' data of the step (their weights).
+     * @param flip_fraction The FLIP fraction @f$\phi@f$.
+     * @param velocity_change, new_velocity, new_acceleration The nodes'
+     *   @f$\Delta v_I@f$, @f$v_I^{n+1}@f$ and @f$a_I@f$ on the local DoFs.
      * @param[out] velocities, accelerations By step index and axis.
      */
     void
@@ -141,6 +146,9 @@ namespace impm
      * system's DoFs (zero elsewhere), by conjugate gradients
      * preconditioned with the lumped mass, to 1e-12 of the right-hand
      * side. A solve that does not converge is an error. Collective.
+     * @param material_points The points.
+     * @param steps The points' data of the step (their weights).
+     * @param regularisation The factor @f$\epsilon@f$ of the lumped mass.
      * @param[out] velocity, acceleration On the local DoFs (owned and
      *   ghosts).
      */

@@ -74,11 +74,16 @@ namespace impm
     bool generalised_alpha;
     /** Generalised-alpha's spectral radius at infinity. */
     double spectral_radius;
-    /** The weights of the start of the step in the inertia and in the
-     *  forces (0 for Newmark). */
-    double alpha_m, alpha_f;
-    /** Newmark's parameters. */
-    double beta, gamma;
+    /** The weight of the start of the step in the inertia (0 for
+     *  Newmark). */
+    double alpha_m;
+    /** The weight of the start of the step in the forces (0 for
+     *  Newmark). */
+    double alpha_f;
+    /** Newmark's beta. */
+    double beta;
+    /** Newmark's gamma. */
+    double gamma;
     /** The mass-proportional damping coefficient (1/s). */
     double mass_damping;
     /** Local non-viscous damping's fraction (explicit only). */

@@ -18,6 +18,31 @@ namespace impm
   using namespace dealii;
 
   /**
+   * @brief Write one output step of a VTU series: each process with data
+   * (@p has_data) writes its piece `<stem>.<rank>.vtu` of @p data (under a
+   * temporary name, then renamed; a process without data writes none: an
+   * empty piece is not valid VTK), then rank 0 writes the record
+   * `<stem>.pvtu` naming the pieces. A process that cannot write stops all
+   * (run_collectively()). Collective; returns the record's file name.
+   */
+  template <int dim, int spacedim>
+  std::string
+  write_vtu_step(const DataOutInterface<dim, spacedim> &data,
+                 const bool                             has_data,
+                 const std::string                     &directory,
+                 const std::string                     &stem,
+                 const MPI_Comm                         communicator);
+
+  /**
+   * @brief Write the `.pvd` record of a series of (time, file) pairs in
+   * their order: consecutive files of one time are the parts 0, 1, ... of
+   * its step; times to 16 digits.
+   */
+  void
+  write_pvd_series(std::ostream                                      &out,
+                   const std::vector<std::pair<double, std::string>> &series);
+
+  /**
    * @brief Writes material points with their fields for ParaView: as `.vtu`
    * pieces, a `.pvtu` record per output step and a `.pvd` time series, or
    * as one `.h5` file per output step (parallel HDF5, all processes into
@@ -50,6 +75,7 @@ namespace impm
      * @brief Start a new output step with @p n_points points on this process
      * and the given field layout.
      *
+     * @param n_points The points of this process.
      * @param names One name per scalar component; vector fields repeat their
      *   name for each component.
      * @param is_vector Whether each component is part of a vector field.
@@ -92,11 +118,6 @@ namespace impm
     /** @brief write() for the vtu format. */
     void
     write_vtu_files(const double time, const std::string &stem);
-
-    /** @brief The `.pvd` record of the series, with each step's files as
-     *  its parts. */
-    void
-    write_pvd_record(std::ostream &out) const;
 
     /** @brief Add the files other_parts() writes for the output step
      *  @p stem to the series at @p time (rank 0). */

@@ -33,10 +33,14 @@ namespace impm
     double total_mass = 0.;
     /** Largest vertical (last axis) Cauchy stress, tension positive. */
     double max_tensile_vertical_stress = 0.;
-    /** Bounding box of the initial positions. */
-    Point<dim> initial_min, initial_max;
-    /** Bounding box of the current positions. */
-    Point<dim> current_min, current_max;
+    /** Bounding box of the initial positions: its lower corner. */
+    Point<dim> initial_min;
+    /** Bounding box of the initial positions: its upper corner. */
+    Point<dim> initial_max;
+    /** Bounding box of the current positions: its lower corner. */
+    Point<dim> current_min;
+    /** Bounding box of the current positions: its upper corner. */
+    Point<dim> current_max;
   };
 
   /**

@@ -48,7 +48,40 @@ namespace impm
         /** The declared fields named (checked against the scene's once
          *  its points are laid out). */
         std::vector<std::string> declared;
-      } fields;
+      };
+      /** The point files' fields. */
+      Fields fields;
+
+      /** @brief The nodal fields written to the grid files (GridFiles in
+       *  postprocess/grid_files.cc; none of them: no grid files). */
+      struct GridFields
+      {
+        /** The last load step's displacement increment. */
+        bool displacement_increment = false;
+        /** The lumped nodal mass. */
+        bool mass = false;
+        /** The internal force (with the couplings' forces). */
+        bool internal_force = false;
+        /** The external force. */
+        bool external_force = false;
+        /** The reaction: internal minus external force on constrained
+         *  DoFs, zero elsewhere. */
+        bool reaction = false;
+        /** The nodal velocity (scenes with inertia only). */
+        bool velocity = false;
+        /** Whether 'all' was named (then velocity only with inertia). */
+        bool all = false;
+
+        /** @brief Whether any field is asked for. */
+        bool
+        any() const
+        {
+          return displacement_increment || mass || internal_force ||
+                 external_force || reaction || velocity;
+        }
+      };
+      /** The grid files' fields. */
+      GridFields grid_fields;
 
       /** @brief Declare the entries in subsection "Output". */
       static void
@@ -56,6 +89,12 @@ namespace impm
       /** @brief Read them. */
       void
       parse_parameters(ParameterHandler &prm);
+
+    private:
+      /** @brief Set grid_fields from the names of 'Grid fields'; refuse
+       *  them with 'Interval' = 0. */
+      void
+      parse_grid_fields(const std::vector<std::string> &names);
     };
 
     /** @brief A deterministic summary for the test suite. */

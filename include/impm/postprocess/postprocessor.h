@@ -93,12 +93,16 @@ namespace impm
   {
     /** Number of the load step (converged steps before it + 1). */
     unsigned int step_number = 0;
-    /** Load factors at the start and at the target of the attempt. */
-    double start = 0., target = 0.;
+    /** The load factor at the start of the attempt. */
+    double start = 0.;
+    /** The load factor at the target of the attempt. */
+    double target = 0.;
     /** The run's progress (0 at its start, 1 at its end: the load factor
      *  of a quasi-static scene, the time over the end time of one in time)
-     *  at the start and at the target of the attempt. */
-    double start_progress = 0., target_progress = 0.;
+     *  at the start of the attempt. */
+    double start_progress = 0.;
+    /** The run's progress at the target of the attempt. */
+    double target_progress = 0.;
     /** The time at the step's end in s (-1 in a scene without time). */
     double end_time = -1.;
     /** Whether the step ends the run (its target is the end). */
@@ -109,10 +113,12 @@ namespace impm
     types::global_dof_index system_dofs = 0;
     /** Largest point displacement of the solve, in cells. */
     double point_increment = 0.;
-    /** Converged steps only: reactions per BackgroundGrid::reaction_columns()
-     *  and their imbalance (negative if not measured). */
+    /** Converged steps only: reactions per
+     *  BackgroundGrid::reaction_columns(). */
     std::vector<double> reactions;
-    double              reaction_imbalance = -1.;
+    /** Converged steps only: the reactions' imbalance (negative if not
+     *  measured). */
+    double reaction_imbalance = -1.;
     /** Values measured by postprocessors (converged steps only). */
     std::vector<StepMeasure> measures;
     /** Testing/Check tangent only: the largest relative difference between
@@ -150,12 +156,19 @@ namespace impm
     log_line(const MeasureScales &scales) const;
   };
 
+  // The nodal state of a converged step (solver/load_step_problem.h).
+  template <int dim>
+  struct ConvergedStep;
+
   /** @brief Totals over the run's load steps, for the summaries. */
   template <int dim>
   struct RunStatistics
   {
-    unsigned int n_converged_steps       = 0;
-    unsigned int n_cuts                  = 0;
+    /** Converged load steps. */
+    unsigned int n_converged_steps = 0;
+    /** Attempts that were cut. */
+    unsigned int n_cuts = 0;
+    /** Newton iterations of all attempts. */
     unsigned int total_newton_iterations = 0;
     /** Residual evaluations (stress updates). */
     unsigned int residual_evaluations = 0;
@@ -175,11 +188,13 @@ namespace impm
     double max_tangent_difference = -1.;
     /** The sum of StepRecord::tangent_columns_across_kinks. */
     unsigned int tangent_columns_across_kinks = 0;
-    /** Reactions and measures of the last converged step. */
-    std::vector<double>      last_reactions;
+    /** Reactions of the last converged step. */
+    std::vector<double> last_reactions;
+    /** Measures of the last converged step. */
     std::vector<StepMeasure> last_measures;
-    /** Set at the end of the run: wall time and the points' state. */
-    double             wall_time = 0.;
+    /** Set at the end of the run: the wall time (s). */
+    double wall_time = 0.;
+    /** Set at the end of the run: the points' state. */
     PointMeasures<dim> final_state;
 
     /** @brief Count the attempt @p record in. */
@@ -242,6 +257,16 @@ namespace impm
     virtual void
     measure_step(const RunContext<dim> &context, StepRecord &record);
 
+    /**
+     * @brief Called for a converged step @p record before the points move
+     * (the step's grid and nodal vectors in @p step; nothing else is made
+     * for it), before measure_step() and after_step().
+     */
+    virtual void
+    after_convergence(const RunContext<dim>    &context,
+                      const StepRecord         &record,
+                      const ConvergedStep<dim> &step);
+
     /** @brief Called after every attempt, converged or cut. */
     virtual void
     after_step(const RunContext<dim>    &context,
@@ -300,6 +325,10 @@ namespace impm
      *  @p elapsed_wall_time of this run added to the wall time. */
     void
     save(RunState &state, const double elapsed_wall_time) const;
+
+    /** @brief See Postprocessor::after_convergence(). */
+    void
+    after_convergence(const StepRecord &record, const ConvergedStep<dim> &step);
 
     /** @brief Measure, count and write the attempt @p record. */
     void

@@ -25,6 +25,26 @@ namespace impm
   using namespace dealii;
 
   /**
+   * @brief The nodal state of a converged load step on the step's grid,
+   * after the couplings have accepted it and before the points move to its
+   * end: what Postprocessor::after_convergence() reads (grid output).
+   */
+  template <int dim>
+  struct ConvergedStep
+  {
+    /** The step's displacement increment (full numbering, ghosted). */
+    const NodalVector &increment;
+    /** The internal force with the couplings' forces (full numbering,
+     *  owned entries). */
+    const NodalVector &internal_force;
+    /** The external force of the step's end (full numbering, owned
+     *  entries). */
+    const NodalVector &external_force;
+    /** The points' supports and weights on the step's grid. */
+    const PointSteps<dim> &point_steps;
+  };
+
+  /**
    * @brief The equilibrium of one load step as a NonlinearProblem: the
    * displacement increment from the start of the step is the unknown, the
    * residual is f_ext - f_int on the DoFs of the linear system, with the
@@ -42,7 +62,13 @@ namespace impm
   public:
     /**
      * @brief The problem over the parts of a run.
+     * @param grid The background grid.
+     * @param system The load step's system (numbering, matrix, vectors).
+     * @param assembler The stress update, forces and matrix.
      * @param couplings The scene's couplings.
+     * @param linear_solver The linear solver.
+     * @param timer The solver's phase timer ("stress update", "assembly",
+     *   "linear solve").
      */
     LoadStepProblem(const BackgroundGrid<dim> &grid,
                     LoadStepSystem<dim>       &system,
@@ -141,6 +167,17 @@ namespace impm
     increment() const
     {
       return displacement_increment;
+    }
+
+    /** @brief The step's nodal state at the current iterate, for output
+     *  of a converged step (Postprocessor::after_convergence()). */
+    ConvergedStep<dim>
+    converged_step() const
+    {
+      return {displacement_increment,
+              internal_force,
+              external_force,
+              system.point_steps};
     }
 
     /** @brief The reactions of the current iterate, per face and component,

@@ -109,8 +109,10 @@ namespace impm
     /** For each iterate, whether a contact changed state since the one
      *  before (Residual::contact_changed). */
     std::vector<bool> contact_changed;
-    /** The last iterate's residual norm and internal force norm (N). */
-    double last_norm = 0., last_internal_force_norm = 0.;
+    /** The last iterate's residual norm. */
+    double last_norm = 0.;
+    /** The last iterate's internal force norm (N). */
+    double last_internal_force_norm = 0.;
     /** The linear solve of each iteration (the last may have failed). */
     std::vector<LinearSolveReport> linear_solves;
     /** For each linear solve, whether it was an iterative solve whose

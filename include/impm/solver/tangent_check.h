@@ -84,6 +84,11 @@ namespace impm
     /**
      * @brief Check the system's matrix and @p border at the iterate @p
      * increment.
+     * @param increment The iterate, perturbed one unknown at a time and
+     *   restored at the end.
+     * @param internal_force The internal force that @p update_forces
+     *   updates.
+     * @param border The couplings' bordered block at the iterate.
      * @param update_forces Updates the stresses and @p internal_force
      *   (with the couplings' forces, compressed) at the current increment;
      *   false if the iterate is inadmissible.

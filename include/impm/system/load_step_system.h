@@ -243,8 +243,10 @@ namespace impm
     TrilinosWrappers::MPI::Vector solution;
 
     /** @brief Load steps whose setup() kept the matrix of the step before
-     *  (the same sparsity pattern on every process), and all steps. */
-    unsigned int n_patterns_reused = 0, n_setups = 0;
+     *  (the same sparsity pattern on every process). */
+    unsigned int n_patterns_reused = 0;
+    /** @brief All load steps' setups. */
+    unsigned int n_setups = 0;
 
   private:
     /**
