@@ -531,13 +531,6 @@ namespace impm
     parameters.scene.file            = options.scene_file;
     parameters.scene.stop_after_step = options.stop_after_step;
     SceneChecks::check(parameters, communicator);
-    if (parameters.grid.axisymmetric &&
-        settings.solver.formulation ==
-          Parameters::Formulation::updated_lagrangian)
-      throw InputError("Solver/Formulation = updated Lagrangian is not yet "
-                       "available with Grid/Axisymmetric = true (the hoop "
-                       "terms are those of the previously converged "
-                       "statement).");
     if (settings.output.analytical_solution ==
         Parameters::AnalyticalSolution::column)
       ColumnSolution<dim>::check_scene(parameters);

@@ -313,8 +313,11 @@ namespace impm
       }
     const double scale = extent > 0. ? 2. / extent : 1.;
 
-    constexpr unsigned int n_rotations = dim == 2 ? 1 : 3;
-    NearNullSpace          modes;
+    // In axisymmetry a rotation of the meridian plane strains the rings:
+    // only the translations are kept.
+    const unsigned int n_rotations =
+      grid.cartesian().axisymmetric ? 0 : (dim == 2 ? 1 : 3);
+    NearNullSpace modes;
     modes.n_modes = dim + n_rotations;
     modes.n_rows  = owned.n_elements();
     modes.values.assign(modes.n_modes * modes.n_rows, 0.);
@@ -324,6 +327,8 @@ namespace impm
         const Tensor<1, dim> x            = (position - centre) * scale;
         modes.values[component * modes.n_rows + r] = 1.;
         // Rotation about axis a: (e_a x x)[component]; in 2D about z.
+        if (n_rotations == 0)
+          continue;
         if constexpr (dim == 2)
           modes.values[dim * modes.n_rows + r] = component == 0 ? -x[1] : x[0];
         else
