@@ -56,8 +56,13 @@ namespace impm
       failures << ' ' << residual;
     std::ostringstream message;
     message << "Load step " << n_converged + 1 << " (from load factor "
-            << load_factor << " to " << next << "): Newton "
-            << record.outcome_description() << '.';
+            << load_factor << " to " << next << "): ";
+    if (record.outcome == NewtonOutcome::step_refused)
+      message << record.refusal;
+    else
+      message << "Newton " << record.outcome_description() << '.';
+    if (!record.smaller_step_may_pass)
+      throw LoadStepFailure(message.str(), load_factor);
     // A residual at the round-off of the internal forces cannot fall
     // further: say so, and what to do.
     if (record.last_internal_force_norm > 0. &&

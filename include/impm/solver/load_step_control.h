@@ -64,8 +64,9 @@ namespace impm
 
     /**
      * @brief Advance or cut after an attempt with @p record (whose outcome
-     * is the judged one). Throws std::runtime_error with the message for
-     * the user when the run cannot go on.
+     * is the judged one, or NewtonOutcome::step_refused: cut, or stop at
+     * once when no smaller step may pass). Throws a LoadStepFailure with
+     * the message for the user when the run cannot go on.
      */
     void
     update(const NewtonRecord &record);
