@@ -72,9 +72,9 @@ namespace impm
       "Maximum motion per step",
       "1",
       Patterns::Double(0.),
-      "A converged load step in which a rigid body moves (a corner of its "
-      "box, displaced and turned) by more than this many cell sizes in one "
-      "direction is cut like one that breaks 'Solver/Maximum point "
+      "A converged load step in which a rigid body is displaced by more "
+      "than this many cell sizes in one direction (its rotation is not "
+      "limited) is cut like one that breaks 'Solver/Maximum point "
       "increment', so that no body passes through material between a "
       "step's start and its end, where no contact sees it; without "
       "'Solver/Step control' it stops the run (0: no limit). Every "
@@ -131,12 +131,15 @@ namespace impm
                     " m (a body outside the grid touches nothing; keep its "
                     "'Displacement' within the grid or enlarge the grid).",
                   false};
+        // The translation over the step (a turning body's rotation is not
+        // limited: a disc turning about its centre sweeps nothing, a wide
+        // plate's corners sweep far from the material, equivalent_runs).
         double largest = 0.;
-        for (unsigned int k = 0; k < start.size(); ++k)
-          for (unsigned int d = 0; d < dim; ++d)
-            largest = std::max(largest,
-                               std::abs(end[k][d] - start[k][d]) /
-                                 cartesian.cell_size[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          largest =
+            std::max(largest,
+                     std::abs(displacement[b][d] - start_displacement[b][d]) /
+                       cartesian.cell_size[d]);
         if (maximum_motion > 0. && largest > maximum_motion)
           {
             std::ostringstream out;

@@ -110,10 +110,11 @@ namespace impm
 
     /**
      * @brief Refuse a converged step in which a body left the grid (the
-     * run stops), moved by more than 'Rigid contact/Maximum motion per
-     * step' cell sizes, or after which a material point lies inside a body
-     * deeper than the contact lets a face in (tunnelling); the step
-     * control cuts the last two. Collective.
+     * run stops), was displaced by more than 'Rigid contact/Maximum motion
+     * per step' cell sizes in one direction (its rotation is not limited), or
+     * after which a material point lies inside a body deeper than the contact
+     * lets a face in (tunnelling); the step control cuts the last two.
+     * Collective.
      */
     StepRefusal
     refuse_step(const MaterialPoints<dim> &material_points,
