@@ -6,6 +6,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <impm/base/errors.h>
+#include <impm/base/stop_signal.h>
 #include <impm/core/default_scene.h>
 #include <impm/core/parameters.h>
 #include <impm/io/scene_input.h>
@@ -202,6 +203,9 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // First: a SIGTERM, SIGINT or SIGUSR1 at any later moment is noted, and
+  // the run saves its last converged state and stops (StopSignal).
+  impm::StopSignal::install();
   // Open MPI's shared-file-pointer component 'sm' guards an MPI-IO file with
   // a named semaphore in /dev/shm named after the file's base name
   // (sem.OMPIO_grid for the checkpoint's grid): a run killed while it holds
@@ -228,7 +232,10 @@ main(int argc, char **argv)
     return run_without_mpi(argc, argv, verbose);
 
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int                       rank =
+  // Again: deal.II starts PETSc, whose PetscPopSignalHandler() sets SIGTERM
+  // (with SIGSEGV, SIGBUS, SIGFPE) back to the default.
+  impm::StopSignal::install();
+  const unsigned int rank =
     dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
   const bool is_root = rank == 0;
   try
@@ -273,6 +280,12 @@ main(int argc, char **argv)
         impm::run_scene<2>(prm, options, MPI_COMM_WORLD);
       else
         impm::run_scene<3>(prm, options, MPI_COMM_WORLD);
+    }
+  catch (const impm::StoppedBySignal &stop)
+    {
+      if (is_root)
+        std::cerr << stop.what() << std::endl;
+      return impm::StopSignal::exit_status(stop.signal);
     }
   catch (const std::exception &exception)
     {

@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
 # summary.json is valid JSON whatever the scene's name: a name with a
-# quote, a backslash and a tab is written escaped, python3's json module
-# reads the file (python3 -m json.tool) and gives the name back unchanged.
+# quote, a backslash, the two characters \n (a newline's escape, which a
+# writer by hand might pass through as one) and a tab is written escaped
+# (nlohmann::json), python3's json module reads the file (python3 -m
+# json.tool) and gives the name back unchanged; the number of processes,
+# the total mass (64,000 kg: the block of 8 x 8 m at 1000 kg/m^3, per m
+# of thickness) and the condition estimate are numbers.
 # Usage: summary_json.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
-name=$(printf 'a "quoted" name\\with a backslash\tand a tab')
+name=$(printf 'a "quoted" name\\with a backslash, \\n as text\tand a tab')
 "${launcher[@]}" "$impm" "$scene" --set "Scene name=$name" > log.txt 2>&1 ||
   fail "the run failed"
 /usr/bin/python3 -m json.tool results/summary.json > /dev/null 2> json_error.txt ||
@@ -16,5 +20,8 @@ with open("results/summary.json") as f:
     summary = json.load(f)
 assert summary["scene"] == sys.argv[1], (summary["scene"], sys.argv[1])
 assert summary["processes"] >= 1
+assert abs(summary["total_mass"] - 64000) < 1e-6, summary["total_mass"]
+assert summary["worst_condition_estimate"] > 0
+assert isinstance(summary["wall_time_per_phase"], dict)
 PYTHON
 echo "summary_json: summary.json is valid JSON with the name given back"

@@ -11,7 +11,9 @@ namespace impm
   template <int dim>
   RigidContact<dim>::RigidContact(const CouplingInputs<dim> &inputs)
     : RigidContact(inputs.parameters.rigid_bodies, inputs.grid)
-  {}
+  {
+    maximum_motion = inputs.prm.get_double("Maximum motion per step");
+  }
 
 
 
@@ -90,5 +92,7 @@ namespace impm
   IMPM_REGISTER_COUPLING(RigidContact,
                          "Rigid contact",
                          !inputs.parameters.rigid_bodies.empty(),
-                         nullptr)
+                         ([](ParameterHandler &prm) {
+                           RigidContact<dim>::declare_parameters(prm);
+                         }))
 } // namespace impm

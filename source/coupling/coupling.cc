@@ -251,6 +251,17 @@ namespace impm
 
 
   template <int dim>
+  StepRefusal
+  Coupling<dim>::refuse_step(const MaterialPoints<dim> &,
+                             const LoadStepSystem<dim> &,
+                             const NodalVector &) const
+  {
+    return {};
+  }
+
+
+
+  template <int dim>
   unsigned int
   Coupling<dim>::n_global_unknowns() const
   {

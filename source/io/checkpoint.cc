@@ -29,9 +29,10 @@ namespace impm
                         "Save the run's state in the output directory "
                         "(checkpoint/) every this many converged load "
                         "steps, so that 'impm SCENE --resume' can continue "
-                        "it (0: never; >= 0). A run also saves and stops on "
-                        "SIGTERM, SIGINT (Ctrl-C; a second one stops at "
-                        "once) or SIGUSR1.");
+                        "it (0: never; >= 0). On SIGTERM, SIGINT (Ctrl-C; a "
+                        "second one stops at once) or SIGUSR1 a run abandons "
+                        "the load step in progress, saves the last converged "
+                        "state and stops (exit status 128 + the signal).");
       prm.declare_entry("Wall time limit",
                         "0",
                         Patterns::Double(0.),

@@ -44,8 +44,12 @@ namespace impm
             }
         }
       else
-        line << "  " << name_of(record.newton.outcome) << " after "
-             << record.newton.n_iterations() << " iterations: step cut";
+        line << "  "
+             << (record.newton.outcome == NewtonOutcome::step_refused ?
+                   record.newton.outcome_description() :
+                   name_of(record.newton.outcome))
+             << " after " << record.newton.n_iterations()
+             << " iterations: step cut";
       return line.str();
     }
   } // namespace

@@ -3,86 +3,14 @@
 #include <impm/io/atomic_file.h>
 #include <impm/postprocess/postprocessor.h>
 
-#include <cmath>
-#include <cstdio>
-#include <iomanip>
-#include <sstream>
+#include <nlohmann/json.hpp>
+
+#include <string>
 
 namespace impm
 {
   namespace
   {
-    /**
-     * @p text as a JSON string: quoted, with the quote, the backslash and
-     * the control characters escaped (RFC 8259, section 7); other bytes
-     * (UTF-8) as they are.
-     */
-    std::string
-    quoted(const std::string &text)
-    {
-      std::string result = "\"";
-      for (const char c : text)
-        switch (c)
-          {
-            case '"':
-              result += "\\\"";
-              break;
-            case '\\':
-              result += "\\\\";
-              break;
-            case '\n':
-              result += "\\n";
-              break;
-            case '\t':
-              result += "\\t";
-              break;
-            case '\r':
-              result += "\\r";
-              break;
-            default:
-              if (static_cast<unsigned char>(c) < 0x20)
-                {
-                  char escape[8];
-                  std::snprintf(escape,
-                                sizeof(escape),
-                                "\\u%04x",
-                                static_cast<unsigned int>(c));
-                  result += escape;
-                }
-              else
-                result += c;
-          }
-      return result + "\"";
-    }
-
-
-
-    /** @p value as a JSON number (10 digits), or null if not finite (JSON
-     *  has no NaN or infinity). */
-    std::string
-    number(const double value)
-    {
-      if (!std::isfinite(value))
-        return "null";
-      std::ostringstream out;
-      out << std::setprecision(10) << value;
-      return out.str();
-    }
-
-
-
-    /** Write @p items as a JSON list of strings. */
-    void
-    write_string_list(std::ostream &json, const std::vector<std::string> &items)
-    {
-      json << '[';
-      for (unsigned int i = 0; i < items.size(); ++i)
-        json << (i ? ", " : "") << quoted(items[i]);
-      json << ']';
-    }
-
-
-
     /**
      * @brief `summary.json`: the scene, its size, the run's totals, its
      * final state and the wall time per phase, written whole at the end.
@@ -109,83 +37,63 @@ namespace impm
         if (Utilities::MPI::this_mpi_process(context.communicator) != 0)
           return;
 
-        std::vector<std::string> bodies;
+        // nlohmann::json quotes and escapes the strings (a scene's name
+        // may hold a quote or a backslash; bytes that are not UTF-8 become
+        // U+FFFD), writes a non-finite number as null and keeps the order
+        // of the keys (ordered_json).
+        nlohmann::ordered_json json;
+        json["scene"]     = parameters.scene.name;
+        json["dimension"] = dim;
+        json["processes"] =
+          Utilities::MPI::n_mpi_processes(context.communicator);
+        json["bodies"] = nlohmann::ordered_json::array();
         for (const auto &body : parameters.bodies)
-          bodies.push_back(body.description());
-        std::ostringstream json;
-        json << std::setprecision(10);
-        json << "{\n"
-             << "  \"scene\": " << quoted(parameters.scene.name) << ",\n"
-             << "  \"dimension\": " << dim << ",\n"
-             << "  \"processes\": "
-             << Utilities::MPI::n_mpi_processes(context.communicator) << ",\n"
-             << "  \"bodies\": ";
-        write_string_list(json, bodies);
-        json << ",\n  \"effects\": ";
-        write_string_list(json, context.effect_descriptions);
-        json << ",\n"
-             << "  \"basis\": "
-             << quoted(basis_name(parameters.material_points.basis)) << ",\n"
-             << "  \"material_points\": " << n_points << ",\n"
-             << "  \"grid_dofs\": " << context.grid.get_dof_handler().n_dofs()
-             << ",\n"
-             << "  \"system_dofs_last_step\": "
-             << statistics.system_dofs_last_step << ",\n"
-             << "  \"load_steps\": " << context.solver.n_load_steps << ",\n"
-             << "  \"newton_iterations\": "
-             << statistics.total_newton_iterations << ",\n";
+          json["bodies"].push_back(body.description());
+        json["effects"]         = context.effect_descriptions;
+        json["basis"]           = basis_name(parameters.material_points.basis);
+        json["material_points"] = n_points;
+        json["grid_dofs"]       = context.grid.get_dof_handler().n_dofs();
+        json["system_dofs_last_step"] = statistics.system_dofs_last_step;
+        json["load_steps"]            = context.solver.n_load_steps;
+        json["newton_iterations"]     = statistics.total_newton_iterations;
         for (const StepMeasure &measure : statistics.last_measures)
-          json << "  " << quoted(measure.column) << ": "
-               << number(measure.value) << ",\n";
-        json << "  \"load_steps_taken\": " << statistics.n_converged_steps
-             << ",\n"
-             << "  \"load_step_cuts\": " << statistics.n_cuts << ",\n"
-             << "  \"largest_point_increment_in_cells\": "
-             << number(statistics.largest_point_increment) << ",\n"
-             << "  \"max_reaction_imbalance\": "
-             << number(statistics.max_reaction_imbalance) << ",\n"
-             << "  \"max_tensile_vertical_stress\": "
-             << number(statistics.final_state.max_tensile_vertical_stress)
-             << ",\n"
-             << "  \"total_mass\": "
-             << number(statistics.final_state.total_mass) << ",\n";
+          json[measure.column] = measure.value;
+        json["load_steps_taken"] = statistics.n_converged_steps;
+        json["load_step_cuts"]   = statistics.n_cuts;
+        json["largest_point_increment_in_cells"] =
+          statistics.largest_point_increment;
+        json["max_reaction_imbalance"] = statistics.max_reaction_imbalance;
+        json["max_tensile_vertical_stress"] =
+          statistics.final_state.max_tensile_vertical_stress;
+        json["total_mass"] = statistics.final_state.total_mass;
         if (context.solver.estimate_condition)
-          json << "  \"worst_condition_estimate\": "
-               << number(statistics.worst_condition) << ",\n"
-               << "  \"smallest_reciprocal_condition_estimate\": "
-               << number(statistics.worst_condition > 0. ?
-                           1. / statistics.worst_condition :
-                           0.)
-               << ",\n";
-        json << "  \"formulation\": "
-             << quoted(Parameters::formulation_names[static_cast<unsigned int>(
-                  context.solver.formulation)])
-             << ",\n"
-             << "  \"residual_evaluations\": "
-             << statistics.residual_evaluations << ",\n"
-             << "  \"microseconds_per_point_evaluation\": "
-             << number(1e6 *
-                       (phase_time("stress update") + phase_time("assembly")) /
-                       (double(n_points) * statistics.residual_evaluations))
-             << ",\n"
-             << "  \"linear_solve_share\": "
-             << number(phase_time("linear solve") / statistics.wall_time)
-             << ",\n"
-             << "  \"peak_memory_mb\": " << number(peak_memory_mb) << ",\n"
-             << "  \"wall_time\": " << number(statistics.wall_time) << ",\n"
-             << "  \"wall_time_per_phase\": {";
-        bool first = true;
+          {
+            json["worst_condition_estimate"] = statistics.worst_condition;
+            json["smallest_reciprocal_condition_estimate"] =
+              statistics.worst_condition > 0. ?
+                1. / statistics.worst_condition :
+                0.;
+          }
+        json["formulation"] =
+          Parameters::formulation_names[static_cast<unsigned int>(
+            context.solver.formulation)];
+        json["residual_evaluations"] = statistics.residual_evaluations;
+        json["microseconds_per_point_evaluation"] =
+          1e6 * (phase_time("stress update") + phase_time("assembly")) /
+          (double(n_points) * statistics.residual_evaluations);
+        json["linear_solve_share"] =
+          phase_time("linear solve") / statistics.wall_time;
+        json["peak_memory_mb"]      = peak_memory_mb;
+        json["wall_time"]           = statistics.wall_time;
+        json["wall_time_per_phase"] = nlohmann::ordered_json::object();
         for (const auto &phase : solver_phases)
           if (times.count(phase))
-            {
-              json << (first ? "\n" : ",\n") << "    " << quoted(phase) << ": "
-                   << number(times.at(phase));
-              first = false;
-            }
-        json << "\n  }\n}\n";
-        write_file_atomically(parameters.scene.output_directory +
-                                "/summary.json",
-                              json.str());
+            json["wall_time_per_phase"][phase] = times.at(phase);
+        write_file_atomically(
+          parameters.scene.output_directory + "/summary.json",
+          json.dump(
+            2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) +
+            "\n");
       }
     };
   } // namespace

@@ -1,16 +1,14 @@
 #include <deal.II/base/utilities.h>
 
 #include <impm/base/errors.h>
+#include <impm/base/stop_signal.h>
 #include <impm/core/scene_checks.h>
 #include <impm/io/checkpoint.h>
 #include <impm/io/output_directory.h>
 #include <impm/io/scene_record.h>
-#include <impm/postprocess/column_solution.h>
 #include <impm/simulator/mpm_solver.h>
 #include <impm/simulator/run.h>
-#include <impm/simulator/strength_reduction.h>
 
-#include <csignal>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -23,19 +21,6 @@ namespace impm
 {
   namespace
   {
-    /** Set by SIGTERM, SIGINT or SIGUSR1: save and stop after the current
-     *  step. */
-    volatile std::sig_atomic_t stop_signal = 0;
-
-    extern "C" void
-    request_stop(int signal)
-    {
-      stop_signal = signal;
-      // A second Ctrl-C stops at once.
-      if (signal == SIGINT)
-        std::signal(SIGINT, SIG_DFL);
-    }
-
     /** The sum of the effects' accelerations acting from the first step. */
     template <int dim>
     Tensor<1, dim>
@@ -130,6 +115,15 @@ namespace impm
       return false;
     });
     problem.check_tangents(settings.testing.check_tangent);
+    // A signal abandons the load step in progress at its next Newton
+    // iteration, on every process together (MPMSolver::stop_for_signal()).
+    newton_solver.set_interruption([this]() {
+      return Utilities::MPI::max(StopSignal::received(), this->communicator) !=
+             0;
+    });
+    if (resume_state != nullptr)
+      checkpointed_step = static_cast<unsigned int>(
+        resume_state->get_double("control.converged steps"));
     for (const auto &coupling : couplings.list())
       if (resume_state == nullptr)
         {
@@ -152,10 +146,6 @@ namespace impm
   void
   MPMSolver<dim>::run()
   {
-    stop_signal = 0;
-    std::signal(SIGTERM, request_stop);
-    std::signal(SIGINT, request_stop);
-    std::signal(SIGUSR1, request_stop);
     Timer wall_timer(communicator);
     wall_timer.start();
     start_run();
@@ -169,7 +159,9 @@ namespace impm
         if (new_state)
           set_up_load_step();
         StepRecord record = attempt_load_step(control);
-        new_state         = record.converged();
+        if (record.newton.outcome == NewtonOutcome::interrupted)
+          stop_for_signal(control, record, wall_timer.wall_time());
+        new_state = record.converged();
         if (record.converged())
           {
             accept_load_step(record);
@@ -177,7 +169,9 @@ namespace impm
             converged_step = record.step_number;
             converged_load = record.target;
           }
-        postprocessors->after_step(record);
+        // A refusal that stops the run is its error line alone.
+        if (record.newton.smaller_step_may_pass)
+          postprocessors->after_step(record);
         try
           {
             control.update(record.newton);
@@ -200,6 +194,8 @@ namespace impm
                 return;
               }
           }
+        if (Utilities::MPI::max(StopSignal::received(), communicator) != 0)
+          stop_for_signal(control, record, wall_timer.wall_time());
         const std::string stop = reason_to_stop(wall_timer.wall_time());
         if (!stop.empty() ||
             (settings.checkpoint.interval > 0 &&
@@ -332,19 +328,45 @@ namespace impm
   std::string
   MPMSolver<dim>::reason_to_stop(const double elapsed) const
   {
-    const int signal =
-      Utilities::MPI::max(static_cast<int>(stop_signal), communicator);
-    if (signal == SIGTERM)
-      return "SIGTERM";
-    if (signal == SIGUSR1)
-      return "SIGUSR1";
-    if (signal == SIGINT)
-      return "SIGINT";
     const double limit = settings.checkpoint.wall_time_limit;
     if (limit > 0. && Utilities::MPI::max(elapsed, communicator) > limit)
       return "'Checkpoint/Wall time limit' = " + std::to_string(limit) +
              " s passed";
     return "";
+  }
+
+
+
+  template <int dim>
+  void
+  MPMSolver<dim>::stop_for_signal(const LoadStepControl &control,
+                                  const StepRecord      &record,
+                                  const double           elapsed)
+  {
+    const int signal =
+      Utilities::MPI::max(StopSignal::received(), communicator);
+    std::ostringstream message;
+    message << "Stopped by " << StopSignal::name(signal);
+    if (record.converged())
+      message << " after load step " << record.step_number;
+    else
+      message << " in load step " << record.step_number << ", abandoned after "
+              << record.newton.n_iterations() << " Newton iterations";
+    // The control has not taken the abandoned attempt: it holds the last
+    // converged state, as do the points and the couplings.
+    const unsigned int converged = control.step_number() - 1;
+    if (converged == 0)
+      message << "; no load step had converged, nothing is saved: start "
+                 "the run again.";
+    else
+      {
+        if (converged != checkpointed_step)
+          write_checkpoint(control, converged, elapsed);
+        message << "; the checkpoint after load step " << converged
+                << " holds the last converged state: continue with impm "
+                   "SCENE --resume.";
+      }
+    throw StoppedBySignal(message.str(), signal);
   }
 
 
@@ -376,6 +398,7 @@ namespace impm
         },
         state,
         scene_text);
+    checkpointed_step = step_number;
     pcout << "  checkpoint after load step " << step_number << std::endl;
   }
 
@@ -445,6 +468,18 @@ namespace impm
       record.point_increment = problem.max_point_increment();
     record.newton.outcome =
       control.judge(record.newton.outcome, record.point_increment);
+    // A converged step a coupling refuses (a rigid body that moved too far
+    // or left the grid, a point left inside one) is cut or stops the run.
+    for (const auto &coupling : couplings.list())
+      if (record.converged())
+        if (const StepRefusal refusal = coupling->refuse_step(
+              material_points, system, problem.increment());
+            refusal.refused())
+          {
+            record.newton.outcome               = NewtonOutcome::step_refused;
+            record.newton.refusal               = refusal.reason;
+            record.newton.smaller_step_may_pass = refusal.smaller_step_may_pass;
+          }
     if (!record.converged())
       record.point_increment = 0.;
     return record;
@@ -519,79 +554,6 @@ namespace impm
 
 
 
-  template <int dim>
-  void
-  run_scene(ParameterHandler &prm,
-            const RunOptions &options,
-            const MPI_Comm    communicator)
-  {
-    RunParameters<dim> settings;
-    settings.parse_parameters(prm);
-    Parameters::All<dim> &parameters = settings.scene;
-    parameters.scene.file            = options.scene_file;
-    parameters.scene.stop_after_step = options.stop_after_step;
-    SceneChecks::check(parameters, communicator);
-    if (settings.output.analytical_solution ==
-        Parameters::AnalyticalSolution::column)
-      ColumnSolution<dim>::check_scene(parameters);
-    if (StrengthReduction<dim>::enabled(prm))
-      {
-        StrengthReduction<dim>::run(prm, options, communicator);
-        return;
-      }
-    if (!options.resume)
-      {
-        MPMSolver<dim> solver(settings,
-                              prm,
-                              EffectRegistry::create_enabled<dim>(prm),
-                              communicator);
-        solver.run();
-        return;
-      }
-    // No other run may write the checkpoint while it is read.
-    OutputDirectory::lock(parameters.scene.output_directory,
-                          parameters.scene.name,
-                          communicator);
-    Checkpoint checkpoint(parameters.scene.output_directory, communicator);
-    checkpoint.select();
-    const std::string grid_file = checkpoint.grid_file();
-    const RunState    state     = checkpoint.read_state();
-    if (state.get_string("scene.name") != parameters.scene.name)
-      throw InputError("--resume: the checkpoint in '" +
-                       parameters.scene.output_directory + "' is of scene '" +
-                       state.get_string("scene.name") + "', not '" +
-                       parameters.scene.name + "'.");
-    if (!options.resume_with_changes)
-      {
-        const std::vector<std::string> differences =
-          SceneRecord::differences(checkpoint.read_scene(),
-                                   SceneRecord::to_text(prm));
-        std::string list;
-        for (const auto &difference : differences)
-          list += (list.empty() ? "" : "; ") + difference;
-        if (!differences.empty())
-          throw InputError(
-            "--resume: the scene differs from the one the checkpoint was "
-            "written from in " +
-            std::to_string(differences.size()) + " entr" +
-            (differences.size() == 1 ? "y" : "ies") + ": " + list +
-            " (resume with that scene, or give --resume-with-changes).");
-      }
-    MPMSolver<dim> solver(settings,
-                          prm,
-                          EffectRegistry::create_enabled<dim>(prm),
-                          communicator,
-                          &state,
-                          grid_file);
-    solver.run();
-  }
-
-
-
   template class MPMSolver<2>;
   template class MPMSolver<3>;
-  template void
-  run_scene<2>(ParameterHandler &, const RunOptions &, const MPI_Comm);
-  template void
-  run_scene<3>(ParameterHandler &, const RunOptions &, const MPI_Comm);
 } // namespace impm

@@ -17,7 +17,6 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
-#include <regex>
 #include <sstream>
 
 namespace impm
@@ -190,6 +189,9 @@ namespace impm
     settings.parse_parameters(prm);
     settings.scene.scene.file             = options.scene_file;
     settings.scene.scene.output_directory = output_directory + "/" + directory;
+    // The trial's directory is new, and its terminal.txt is opened before
+    // the run takes the directory over: kept there, not refused.
+    settings.scene.scene.overwrite_existing_output = true;
     for (auto &body : settings.scene.bodies)
       body.material = body.material->with_reduced_strength(factor);
 
@@ -310,21 +312,8 @@ namespace impm
                                OutputDirectory::ExistingRun::overwrite :
                                OutputDirectory::ExistingRun::refuse,
                              communicator);
-    run_collectively(communicator, [&]() {
-      if (Utilities::MPI::this_mpi_process(communicator) != 0)
-        return;
-      namespace fs = std::filesystem;
-      static const std::regex trial_name(
-        R"(^(trial_\d+|last_stable|first_failed)$)");
-      // Listed first, removed after: the directory is not changed while
-      // it is read.
-      std::vector<fs::path> earlier;
-      for (const auto &entry : fs::directory_iterator(directory))
-        if (std::regex_match(entry.path().filename().string(), trial_name))
-          earlier.push_back(entry.path());
-      for (const auto &path : earlier)
-        fs::remove_all(path);
-    });
+    // OutputDirectory::prepare() removes the trials and links of an
+    // earlier search (not those it did not write).
   }
 
 

@@ -43,8 +43,11 @@ namespace impm
       {
         ++n_converged;
         load_factor = next;
+        // An easy step doubles the next, but not to an increment a coupling
+        // refused (a rigid body's motion is proportional to it).
         if (parameters.step_control &&
-            record.n_iterations() <= parameters.easy_iterations)
+            record.n_iterations() <= parameters.easy_iterations &&
+            std::min(2. * step_size, nominal_step) < refused_increment)
           step_size = std::min(2. * step_size, nominal_step);
         return;
       }
@@ -56,8 +59,15 @@ namespace impm
       failures << ' ' << residual;
     std::ostringstream message;
     message << "Load step " << n_converged + 1 << " (from load factor "
-            << load_factor << " to " << next << "): Newton "
-            << record.outcome_description() << '.';
+            << load_factor << " to " << next << "): ";
+    if (record.outcome == NewtonOutcome::step_refused)
+      message << record.refusal;
+    else
+      message << "Newton " << record.outcome_description() << '.';
+    if (!record.smaller_step_may_pass)
+      throw LoadStepFailure(message.str(), load_factor);
+    if (record.outcome == NewtonOutcome::step_refused)
+      refused_increment = std::min(refused_increment, next - load_factor);
     // A residual at the round-off of the internal forces cannot fall
     // further: say so, and what to do.
     if (record.last_internal_force_norm > 0. &&

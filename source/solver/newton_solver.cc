@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace impm
 {
@@ -26,6 +27,8 @@ namespace impm
   {
     if (outcome == NewtonOutcome::linear_solve_failed && !linear_solves.empty())
       return name_of(outcome) + " (" + linear_solves.back().failure + ")";
+    if (outcome == NewtonOutcome::step_refused)
+      return name_of(outcome) + ": " + refusal;
     return name_of(outcome);
   }
 
@@ -61,12 +64,25 @@ namespace impm
 
 
 
+  void
+  NewtonSolver::set_interruption(std::function<bool()> check)
+  {
+    interrupted = std::move(check);
+  }
+
+
+
   NewtonRecord
   NewtonSolver::solve(NonlinearProblem &problem) const
   {
     NewtonRecord record;
     for (unsigned int iteration = 0;; ++iteration)
       {
+        if (interrupted && interrupted())
+          {
+            record.outcome = NewtonOutcome::interrupted;
+            return record;
+          }
         const NonlinearProblem::Residual residual = problem.evaluate_residual();
         if (!residual.admissible)
           {

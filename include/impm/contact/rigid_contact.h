@@ -108,6 +108,23 @@ namespace impm
     void
     add_to_global_unknowns(const Vector<double> &correction) override;
 
+    /**
+     * @brief Refuse a converged step in which a body left the grid (the
+     * run stops), was displaced by more than 'Rigid contact/Maximum motion
+     * per step' cell sizes in one direction (its rotation is not limited), or
+     * after which a material point lies inside a body deeper than the contact
+     * lets a face in (tunnelling); the step control cuts the last two.
+     * Collective.
+     */
+    StepRefusal
+    refuse_step(const MaterialPoints<dim> &material_points,
+                const LoadStepSystem<dim> &system,
+                const NodalVector         &increment) const override;
+
+    /** @brief Declare the entries of subsection 'Rigid contact'. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
     /** @brief The body that no material holds in a force-driven
      *  component. */
     std::string
@@ -390,6 +407,24 @@ namespace impm
     /** @brief Evaluate @p probe at the face centre @p position. */
     void
     evaluate(Probe &probe, const Point<dim> &position) const;
+
+    /** @brief The corners of body @p b's own box displaced by @p
+     *  displacement and turned by @p rotation. */
+    std::vector<Point<dim>>
+    moved_corners(const unsigned int    b,
+                  const Tensor<1, dim> &displacement,
+                  const Tensor<2, dim> &rotation) const;
+
+    /** @brief The tunnelling check of refuse_step(): the material point
+     *  deepest inside a body at the end of the step. Collective. */
+    StepRefusal
+    points_inside(const MaterialPoints<dim> &material_points,
+                  const LoadStepSystem<dim> &system,
+                  const NodalVector         &increment) const;
+
+    /** 'Rigid contact/Maximum motion per step', in cell sizes (0: no
+     *  limit). */
+    double maximum_motion = 1.;
 
     const std::vector<RigidBody<dim>> &rigid_bodies;
     const BackgroundGrid<dim>         &grid;

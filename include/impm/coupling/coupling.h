@@ -15,6 +15,7 @@
 #include <impm/core/load_path.h>
 #include <impm/core/parameters.h>
 #include <impm/coupling/step_measure.h>
+#include <impm/coupling/step_refusal.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
@@ -412,6 +413,14 @@ namespace impm
     accept(MaterialPoints<dim>       &material_points,
            const LoadStepSystem<dim> &system,
            const NodalVector         &increment);
+
+    /** @brief Whether the converged step with displacement increment @p
+     *  increment (ghosted) must be refused (none by default): checked
+     *  before accept(), on every process. Collective. */
+    virtual StepRefusal
+    refuse_step(const MaterialPoints<dim> &material_points,
+                const LoadStepSystem<dim> &system,
+                const NodalVector         &increment) const;
 
     /** @brief The force of the material on what this coupling stands for
      *  (bodies, springs) at the last accepted step, which carries part of

@@ -11,17 +11,21 @@ namespace impm
    * @brief The output directory of a run, which holds one run only.
    *
    * A run records itself in the file `impm-run.txt` (its scene name and
-   * scene file). At the start, a directory that holds the run of another
-   * scene is refused, unless the scene's 'Existing output' is 'overwrite'
-   * (or the command line says `--overwrite`); a directory that holds an
-   * earlier run of the same scene (same name and file) is taken over. In
-   * both cases the files the earlier run wrote (`steps.csv`, `newton.csv`,
-   * `summary.json`, `points*` point files and series, the `checkpoint*`
-   * directories) are removed first,
-   * so that old and new results never mix. Leftover `*.tmp` files of an
-   * interrupted write are always removed. Files IMPM does not write are
-   * left alone. A run holds a lock on the directory (lock()), so that two
-   * runs never write in it at once.
+   * scene file, and the entries of the directory it found there and did
+   * not write: "kept = NAME"). At the start, a directory that holds the
+   * run of another scene is refused, unless the scene's 'Existing output'
+   * is 'overwrite' (or the command line says `--overwrite`); a directory
+   * that holds an earlier run of the same scene (same name and file) is
+   * taken over. The entries the earlier run wrote (those with the names
+   * IMPM writes, is_run_file(), the `checkpoint*` directories and a
+   * strength reduction's trials, that its record does not list as kept)
+   * are removed first, so that old and new results never mix. Entries IMPM
+   * did not write (in a directory without a record: all) stay: a
+   * directory with such an entry that no earlier run kept is refused
+   * (naming one) unless 'overwrite' is asked, and then kept and listed; a
+   * checkpoint directory holding a file a checkpoint does not is refused
+   * always (a run would replace it). A run holds a lock on the directory
+   * (lock()), so that two runs never write in it at once.
    */
   class OutputDirectory
   {

@@ -150,10 +150,20 @@ namespace impm
                      const unsigned int     step_number,
                      const double           elapsed);
 
-    /** Whether to stop (and checkpoint) now: a SIGTERM, SIGINT or SIGUSR1
-     * arrived on any process, or the wall-time limit has passed; the reason. */
+    /** Whether to stop (and checkpoint) now: the wall-time limit has
+     * passed on any process; the reason. */
     std::string
     reason_to_stop(const double elapsed) const;
+
+    /** After a signal (StopSignal) on any process, in the attempt @p
+     * record (abandoned, NewtonOutcome::interrupted, or converged): save
+     * the last converged state of @p control in a checkpoint unless the
+     * newest holds it, and throw a StoppedBySignal. Collective;
+     * @p elapsed: this run's wall time so far. */
+    [[noreturn]] void
+    stop_for_signal(const LoadStepControl &control,
+                    const StepRecord      &record,
+                    const double           elapsed);
 
     /** The modules' parameters. */
     const RunParameters<dim> &settings;
@@ -190,6 +200,9 @@ namespace impm
     const RunState *resume_state;
     /** The number of the last converged load step. */
     unsigned int converged_step = 0;
+    /** The load step of the newest checkpoint (of this run or the one it
+     *  resumed; 0: none). */
+    unsigned int checkpointed_step = 0;
     /** The load factor of the last converged load step. */
     double converged_load = 0.;
     /** See set_stop_condition(). */

@@ -6,6 +6,7 @@
 #include <impm/solver/newton_solver.h>
 #include <impm/solver/solver_parameters.h>
 
+#include <limits>
 #include <sstream>
 
 namespace impm
@@ -17,7 +18,8 @@ namespace impm
    * The load factor goes from 0 to 1 in 'Solver/Load steps' nominal steps.
    * Given an outcome, the control advances (and after an easy step, with
    * at most 'Solver/Easy iterations' iterations, doubles the step back
-   * towards the nominal one), repeats the step with half the increment
+   * towards the nominal one, but not to an increment a coupling refused),
+   * repeats the step with half the increment
    * ('Solver/Step control'), or stops the run with a message naming the
    * load step and every failed attempt. The last step lands exactly on the
    * full load.
@@ -64,8 +66,9 @@ namespace impm
 
     /**
      * @brief Advance or cut after an attempt with @p record (whose outcome
-     * is the judged one). Throws std::runtime_error with the message for
-     * the user when the run cannot go on.
+     * is the judged one, or NewtonOutcome::step_refused: cut, or stop at
+     * once when no smaller step may pass). Throws a LoadStepFailure with
+     * the message for the user when the run cannot go on.
      */
     void
     update(const NewtonRecord &record);
@@ -84,6 +87,11 @@ namespace impm
     double                    step_size;
     double                    load_factor = 0.;
     unsigned int              n_converged = 0;
+    /** The smallest increment a coupling refused in this run
+     *  (NewtonOutcome::step_refused): an easy step does not grow the next
+     *  to it (not kept in a checkpoint: a resumed run may try it once
+     *  more). */
+    double refused_increment = std::numeric_limits<double>::infinity();
     /** Each failed attempt of the run, for the final error message. */
     std::ostringstream failures;
   };

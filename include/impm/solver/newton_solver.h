@@ -6,6 +6,7 @@
 #include <impm/solver/solver_parameters.h>
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -31,11 +32,16 @@ namespace impm
      *  increment' cells (set by the load-step control, not by Newton). */
     increment_too_large,
     /** An explicit time step above the stable one (no Newton solve). */
-    above_stable_step
+    above_stable_step,
+    /** Converged, but a coupling refused the step (Coupling::refuse_step(),
+     *  the reason in NewtonRecord::refusal; set by MPMSolver). */
+    step_refused,
+    /** Abandoned at a signal (NewtonSolver::set_interruption()). */
+    interrupted
   };
 
   /** @brief The words for each NewtonOutcome, as the log and errors print. */
-  constexpr std::array<const char *, 8> newton_outcome_names = {
+  constexpr std::array<const char *, 10> newton_outcome_names = {
     {"converged",
      "iteration limit",
      "diverged",
@@ -43,7 +49,9 @@ namespace impm
      "inverted point",
      "linear solve failed",
      "point increment too large",
-     "time step above the stable one"}};
+     "time step above the stable one",
+     "step refused",
+     "interrupted"}};
 
   /** @brief The name of @p outcome. */
   inline std::string
@@ -120,8 +128,13 @@ namespace impm
      *  residual (NewtonSolver::linear_tolerance): it was asked only to bring
      *  the residual below the tolerance, not to contract quadratically. */
     std::vector<bool> asked_for_tolerance_only;
+    /** NewtonOutcome::step_refused: the reason, and whether a smaller step
+     *  may pass (StepRefusal). */
+    std::string refusal;
+    bool        smaller_step_may_pass = true;
 
-    /** @brief The outcome's name, with the cause of a failed linear solve. */
+    /** @brief The outcome's name, with the cause of a failed linear solve
+     *  or the reason of a refused step. */
     std::string
     outcome_description() const;
 
@@ -176,6 +189,14 @@ namespace impm
     solve(NonlinearProblem &problem) const;
 
     /**
+     * @brief Check @p interrupted before every iteration (a collective
+     * check, the same on every process): when it returns true the solve
+     * stops with NewtonOutcome::interrupted.
+     */
+    void
+    set_interruption(std::function<bool()> interrupted);
+
+    /**
      * @brief The relative tolerance of the linear solve after a relative
      * residual @p residual: 'Solver/Linear tolerance', or with 'Solver/
      * Adaptive linear tolerance' the forcing term min(eta_max, max(0.1 r,
@@ -201,6 +222,8 @@ namespace impm
 
   private:
     const Parameters::Solver &parameters;
+    /** set_interruption()'s check (empty: none). */
+    std::function<bool()> interrupted;
   };
 } // namespace impm
 
