@@ -85,8 +85,11 @@ timeout 120 "${launcher[@]}" "$impm" "$tests/collapse_h1_4steps.prm" \
 status=$?
 [ $status -eq 124 ] && fail "a grid piece that cannot be written: no exit"
 [ $status -eq 0 ] && fail "a grid piece that cannot be written: no error"
+# (Since the start of a run refuses an entry with one of IMPM's names
+# that no run of it wrote, the obstacle is refused before the write: the
+# line names it either way.)
 [ "$(grep -c '^Error: ' log.txt)" = 1 ] &&
-  grep -q "^Error: .*unwritable/$piece" log.txt ||
+  grep -q "^Error: .*$piece" log.txt ||
   fail "not one error line naming the grid piece"
 
 if [ ${#launcher[@]} -gt 0 ]; then
