@@ -456,17 +456,14 @@ namespace impm
     /** The scene's time (subsection `Time`). */
     const Parameters::Time &time;
 
-    /**
-     * @brief For a coupling not yet formulated in axisymmetry: refuse an
-     * axisymmetric scene with one line naming @p coupling.
-     */
+    /** @brief Refuse an axisymmetric scene, naming @p coupling (one not
+     *  yet formulated with the ring's 2 pi r). */
     void
     refuse_axisymmetry(const std::string &coupling) const
     {
       if (parameters.grid.axisymmetric)
-        throw InputError(coupling +
-                         " is not yet available with Grid/Axisymmetric = "
-                         "true (its terms lack the ring's 2 pi r).");
+        throw InputError(coupling + " is not yet available with "
+                                    "Grid/Axisymmetric = true.");
     }
   };
 
