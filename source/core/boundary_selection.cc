@@ -13,6 +13,19 @@ namespace impm
 {
   namespace
   {
+    /** @brief The centre of face @p f of the lattice cell of spacing
+     *  @p spacing around @p x. */
+    template <int dim>
+    Point<dim>
+    lattice_face_centre(Point<dim>            x,
+                        const unsigned int    f,
+                        const Tensor<1, dim> &spacing)
+    {
+      const unsigned int axis = Names::face_axis(f);
+      x[axis] += 0.5 * Names::face_sign(f) * spacing[axis];
+      return x;
+    }
+
     /**
      * The part of a 2D boundary piece inside the box [@p lower, @p upper]:
      * the piece is taken as the straight segment through its midpoint
@@ -231,17 +244,10 @@ namespace impm
     if (pieces.empty())
       for (const auto &[point, faces] : local)
         for (unsigned int f = 0; f < 2 * dim; ++f)
-          if (faces & (1u << f))
-            {
-              // In axisymmetry the ring the face sweeps: 2 pi r at its
-              // centre.
-              Point<dim> centre = point.second;
-              if (Names::face_axis(f) == 0)
-                centre[0] +=
-                  (Names::face_sign(f) > 0 ? 0.5 : -0.5) * spacing[0];
-              point_areas[point.first][f] +=
-                lattice_face[Names::face_axis(f)] * grid.ring_length(centre);
-            }
+          if (faces & (1u << f)) // (in axisymmetry: the face's ring)
+            point_areas[point.first][f] +=
+              lattice_face[Names::face_axis(f)] *
+              grid.ring_length(lattice_face_centre(point.second, f, spacing));
     for (auto piece : pieces)
       {
         // A side chosen with a region: in 2D the region clips each piece

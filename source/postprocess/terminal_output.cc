@@ -510,24 +510,16 @@ namespace impm
                             values[dim + d] / length);
               std::cout << buffer;
             }
-          std::snprintf(
-            buffer, sizeof(buffer), "%.*f", digits, values[2 * dim] / stress);
-          std::cout << ", sigma_vertical = " << buffer;
-          std::snprintf(buffer,
-                        sizeof(buffer),
-                        "%.*f",
-                        digits,
-                        values[2 * dim + 1] / stress);
-          std::cout << ", sigma_xx = " << buffer;
-          // Axisymmetry: the hoop stress.
-          if (values.size() > 2 * dim + 2)
+          // The stresses (in axisymmetry the hoop stress last).
+          const char *names[] = {"sigma_vertical", "sigma_xx", "sigma_hoop"};
+          for (unsigned int k = 0; 2 * dim + k < values.size(); ++k)
             {
               std::snprintf(buffer,
                             sizeof(buffer),
                             "%.*f",
                             digits,
-                            values[2 * dim + 2] / stress);
-              std::cout << ", sigma_hoop = " << buffer;
+                            values[2 * dim + k] / stress);
+              std::cout << ", " << names[k] << " = " << buffer;
             }
           std::cout << '\n';
         }
