@@ -120,6 +120,7 @@ def main():
             path = os.path.join(directory, "scene.prm")
             with open(path, "w") as target:
                 target.write("".join(mutated))
+            case_start = time.time()
             try:
                 run = subprocess.run(
                     [arguments.impm, path, "--stop-after-step", "1"],
@@ -135,7 +136,8 @@ def main():
                 first = next((line for line in output.splitlines()
                               if line.startswith("Error: ")), "")
                 print(f"case {case} ({os.path.basename(scene)}, "
-                      f"{description}): {outcome} {first}", flush=True)
+                      f"{description}): {outcome} in "
+                      f"{time.time() - case_start:.1f} s {first}", flush=True)
             if outcome not in ("ran", "clear error"):
                 name = os.path.basename(scene)
                 failures.append((case, name, description, outcome, output))

@@ -155,6 +155,22 @@ namespace
 
 
   /**
+   * @brief Whether an MPI launcher (mpirun, srun, Hydra) or a batch system
+   * started this process: it announces the rank in the environment.
+   */
+  bool
+  launched_by_mpi()
+  {
+    for (const char *name :
+         {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK", "SLURM_PROCID"})
+      if (std::getenv(name) != nullptr)
+        return true;
+    return false;
+  }
+
+
+
+  /**
    * @brief What needs no MPI: --help (anywhere on the command line) and
    * --print-parameters (with the plugin libraries the scene names loaded).
    * Started under mpirun, only the first process prints.
@@ -214,6 +230,16 @@ main(int argc, char **argv)
   // shared file pointer; without 'sm' Open MPI takes a component whose locks
   // die with the process. A user's own choice (the variable set) is kept.
   setenv("OMPI_MCA_sharedfp", "^sm", 0);
+  // A run without a launcher (no mpirun) is one process: Open MPI's singleton
+  // start then need not start a runtime daemon nor probe the network's
+  // transports, which halves its start (0.62 s to 0.30 s on this machine,
+  // measured on a scene refused at its first line). A user's own choice is
+  // kept here too.
+  if (!launched_by_mpi())
+    {
+      setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+      setenv("OMPI_MCA_pml", "ob1", 0);
+    }
   // Errors are reported by their message; a user needs no stack trace.
   dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
   // A file-size limit (ulimit -f) makes a write fail with an error the
