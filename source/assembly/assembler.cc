@@ -104,14 +104,15 @@ namespace impm
             continue;
           }
         step.deformation_increment_inverse = invert(dF);
-        // Axisymmetry: the hoop stretch r^{n+1} / r^n.
-        if (step.inverse_radius != 0.)
+        // Axisymmetry: the hoop stretch r^{n+1} / r^n (its average over
+        // the point's ring).
+        if (step.axisymmetric)
           {
-            double radial_increment = 0.;
+            double hoop_strain = 0.;
             for (unsigned int v = 0; v < s.n_nodes; ++v)
-              radial_increment +=
-                s.weights[v] * increment.local_element(step.dofs[v * dim]);
-            step.hoop_increment = 1. + radial_increment * step.inverse_radius;
+              hoop_strain +=
+                s.hoop_weights[v] * increment.local_element(step.dofs[v * dim]);
+            step.hoop_increment = 1. + hoop_strain;
             if (!(step.hoop_increment > 0.) ||
                 !std::isfinite(step.hoop_increment))
               {
@@ -195,19 +196,19 @@ namespace impm
   {
     /**
      * @brief Axisymmetry: add one point's hoop force to its radial nodal
-     * forces, @f$f_{v,r} \mathrel{+}= \tilde P_{\theta\theta} V^n S_v /
-     * r^n@f$ with @f$\tilde P_{\theta\theta} V^n = \tau_{\theta\theta}
-     * V^0 / \Delta F_{\theta\theta}@f$.
+     * forces, @f$f_{v,r} \mathrel{+}= \tilde P_{\theta\theta} V^n
+     * \bar N_{\theta,v}@f$ with @f$\tilde P_{\theta\theta} V^n =
+     * \tau_{\theta\theta} V^0 / \Delta F_{\theta\theta}@f$ and the hoop
+     * weight @f$\bar N_{\theta,v}@f$, the average of @f$N_v / r^n@f$.
      */
     template <int dim>
     void
     add_hoop_forces(const PointStep<dim> &step, double *forces)
     {
       const double hoop_stress = step.update.kirchhoff_stress[2][2] /
-                                 step.hoop_increment * step.initial_volume *
-                                 step.inverse_radius;
+                                 step.hoop_increment * step.initial_volume;
       for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-        forces[v * dim] += hoop_stress * step.support.weights[v];
+        forces[v * dim] += hoop_stress * step.support.hoop_weights[v];
     }
 
 
@@ -287,7 +288,7 @@ namespace impm
                              gradients,
                              step.support.n_nodes,
                              forces.data());
-            if (step.inverse_radius != 0.)
+            if (step.axisymmetric)
               add_hoop_forces(step, forces.data());
             for (unsigned int k = 0; k < n; ++k)
               internal_force.local_element(step.dofs[k]) += forces[k];
@@ -303,9 +304,8 @@ namespace impm
         const auto stiffness = std::make_unique<PointStiffness<dim>>();
         std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>
           group_gradients;
-        // Axisymmetry: N_v / r^n on the point's and on the group's support.
-        std::array<double, PointSupport<dim>::max_nodes> hoop_weights,
-          group_hoop_weights;
+        // Axisymmetry: the hoop weights on the group's support.
+        std::array<double, PointSupport<dim>::max_nodes> group_hoop_weights;
         for (const AssemblyGroup &group : this->system.assembly_groups)
           {
             // The group's matrix over all its support's DoFs; the rows and
@@ -319,7 +319,7 @@ namespace impm
                 group.points.end(),
                 [&](const unsigned int p) {
                   return point_steps[p].material->has_symmetric_tangent() &&
-                         point_steps[p].inverse_radius == 0.;
+                         !point_steps[p].axisymmetric;
                 });
             stiffness->reset(group.n_nodes,
                              symmetric ? TangentSymmetry::major :
@@ -328,7 +328,7 @@ namespace impm
             for (const unsigned int p : group.points)
               {
                 const PointStep<dim> &step         = point_steps[p];
-                const bool            axisymmetric = step.inverse_radius != 0.;
+                const bool            axisymmetric = step.axisymmetric;
                 HoopTangent<dim>      hoop;
                 Tensor<4, dim>        tangent =
                   axisymmetric ?
@@ -351,12 +351,8 @@ namespace impm
                                        step.initial_volume),
                     gradient_map(p));
                 const Tensor<1, dim> *gradients = this->gradients(p);
-                // Axisymmetry: the weights over the radius, N_v / r^n.
-                if (axisymmetric)
-                  for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-                    hoop_weights[v] =
-                      step.support.weights[v] * step.inverse_radius;
-                const double *weights_over_radius = hoop_weights.data();
+                const double         *weights_over_radius =
+                  step.support.hoop_weights.data();
                 if (!group.node_positions.empty())
                   {
                     // The point's gradients on the group's support, zero
@@ -371,7 +367,7 @@ namespace impm
                                   0.);
                         for (unsigned int v = 0; v < step.support.n_nodes; ++v)
                           group_hoop_weights[node_positions[v]] =
-                            hoop_weights[v];
+                            step.support.hoop_weights[v];
                         weights_over_radius = group_hoop_weights.data();
                       }
                     for (unsigned int v = 0; v < step.support.n_nodes; ++v)

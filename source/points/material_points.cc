@@ -39,10 +39,8 @@ namespace impm
         checkpoint_state->get_string("points.layout") + ", this scene's " +
         property_layout.description() +
         ": resume with the scene the checkpoint was written from.");
-    // Each process seeds the points of its cells: share the cells by the
-    // points they will hold first, so that the processes whose cells hold
-    // the bodies do not seed (and store) all points until the first
-    // repartition.
+    // Share the cells by the points they will hold before seeding, so that
+    // not all points are seeded on the bodies' processes.
     if (checkpoint_state == nullptr &&
         Utilities::MPI::n_mpi_processes(communicator) > 1)
       grid.partition_by(
@@ -409,11 +407,13 @@ namespace impm
         const auto                  &s    = step.support;
         const MutablePointState<dim> state(point.get_properties());
 
+        // The displacement at the point (PointSupport::radial_offset).
         Point<dim> position = point.get_location();
         for (unsigned int v = 0; v < s.n_nodes; ++v)
           for (unsigned int i = 0; i < dim; ++i)
             position[i] +=
-              s.weights[v] * increment.local_element(step.dofs[v * dim + i]);
+              (s.weights[v] + s.radial_offset * s.gradients[v][0]) *
+              increment.local_element(step.dofs[v * dim + i]);
 
         const Tensor<2, 3> F =
           step.full_deformation_increment() * state.deformation_gradient();
@@ -452,7 +452,7 @@ namespace impm
 
         bool finite = true;
         for (unsigned int d = 0; d < dim; ++d)
-          finite = finite && std::isfinite(position[d]);
+          finite &= std::isfinite(position[d]);
         if ((!finite || !grid.contains(position)) && left_grid.empty())
           {
             std::ostringstream message;

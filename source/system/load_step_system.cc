@@ -39,8 +39,7 @@ namespace impm
                            step.support);
         step.initial_volume = state.initial_volume();
         step.material       = &material_points.material_of(properties);
-        if (grid.cartesian().axisymmetric)
-          step.inverse_radius = 1. / point.get_location()[0];
+        step.axisymmetric   = grid.cartesian().axisymmetric;
         for (unsigned int v = 0; v < step.support.n_nodes; ++v)
           {
             const auto *dofs = grid.node_dofs(step.support.nodes[v]);

@@ -6,6 +6,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <impm/basis/basis_1d.h>
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -41,108 +43,6 @@ namespace impm
   std::string
   basis_name(const BasisType basis);
 
-  /**
-   * @brief One-dimensional weights between one node and one material point.
-   *
-   * All functions take the distance `d = x_p - x_v` of the point from the node
-   * and return the weight and its derivative with respect to the point's
-   * position `x_p` (which is the derivative with respect to the start-of-step
-   * coordinate in the formulation).
-   */
-  namespace Basis1D
-  {
-    /**
-     * @brief The Q1 hat function of a node, @f$N(d) = \max(0, 1-|d|/h)@f$.
-     */
-    inline double
-    hat(const double d, const double h)
-    {
-      const double a = std::abs(d);
-      return (a < h) ? 1. - a / h : 0.;
-    }
-
-    /**
-     * @brief The integral of the hat function from @f$-\infty@f$ to @p t.
-     */
-    inline double
-    hat_integral(const double t, const double h)
-    {
-      if (t <= -h)
-        return 0.;
-      if (t <= 0.)
-        return (t + h) * (t + h) / (2. * h);
-      if (t < h)
-        return h - (h - t) * (h - t) / (2. * h);
-      return h;
-    }
-
-    /**
-     * @brief GIMP weight: the hat function averaged over the domain
-     * @f$[d-l_p, d+l_p]@f$ clipped to @f$[lower, upper]@f$ (the grid, in
-     * coordinates relative to the node).
-     *
-     * Clipping the domain at the grid boundary keeps the partition of unity
-     * when a domain reaches past the outermost nodes. For an unclipped domain
-     * with @f$l_p \le h/2@f$ this is the three-piece formula of Bardenhagen
-     * and Kober (2004).
-     *
-     * The gradient is the hat function's derivative averaged over the same
-     * (clipped) domain, @f$(N(b)-N(a))/(b-a)@f$. For an unclipped domain it
-     * equals the derivative of the weight with respect to @f$x_p@f$; for a
-     * clipped one it is not, and it is the one that reproduces the gradient
-     * of a linear field exactly (the derivative of the clipped weight would
-     * halve it).
-     *
-     * @param d Point position minus node position.
-     * @param h Cell size in this direction.
-     * @param lp Half-length of the point's domain in this direction.
-     * @param lower Lower end of the grid, relative to the node.
-     * @param upper Upper end of the grid, relative to the node.
-     * @param[out] weight The weight @f$S_{vp}@f$.
-     * @param[out] derivative The domain-averaged gradient.
-     */
-    inline void
-    gimp(const double d,
-         const double h,
-         const double lp,
-         const double lower,
-         const double upper,
-         double      &weight,
-         double      &derivative)
-    {
-      const bool   clip_low  = (d - lp < lower);
-      const bool   clip_high = (d + lp > upper);
-      const double a         = clip_low ? lower : d - lp;
-      const double b         = clip_high ? upper : d + lp;
-      const double length    = b - a;
-      const double integral  = hat_integral(b, h) - hat_integral(a, h);
-      weight                 = integral / length;
-      derivative             = (hat(b, h) - hat(a, h)) / length;
-    }
-
-    /**
-     * @brief Standard MPM weight: the hat function and its derivative,
-     * where the derivative is that of the point's cell: @f$-1/h@f$ for the
-     * cell's lower node and @f$+1/h@f$ for its upper node.
-     *
-     * @param d Point position minus node position.
-     * @param h Cell size.
-     * @param node_is_upper Whether the node is the upper node of the point's
-     *   cell in this direction.
-     * @param[out] weight The weight.
-     * @param[out] derivative Its derivative with respect to @f$x_p@f$.
-     */
-    inline void
-    standard(const double d,
-             const double h,
-             const bool   node_is_upper,
-             double      &weight,
-             double      &derivative)
-    {
-      weight     = hat(d, h);
-      derivative = node_is_upper ? 1. / h : -1. / h;
-    }
-  } // namespace Basis1D
 
   /**
    * @brief Geometry of the Cartesian background grid: origin, cell size and
@@ -279,6 +179,18 @@ namespace impm
     std::array<double, max_nodes> weights;
     /** Gradients @f$\partial S_{vp}/\partial \tilde x@f$. */
     std::array<Tensor<1, dim>, max_nodes> gradients;
+    /** Axisymmetry only: the hoop weights, the averages of @f$N_v/r@f$
+     *  over the point's ring (standard MPM: @f$N_v(x_p)/r_p@f$), which
+     *  give the hoop strain @f$\sum_v \bar N_{\theta,v} u_{v,r}@f$ and the
+     *  hoop force. */
+    std::array<double, max_nodes> hoop_weights;
+    /** Axisymmetric GIMP only: the point's radius less the centroid of
+     *  its ring's volume, @f$r_p - \sum_v S_{vp} r_v@f$. The radius-weighted
+     *  weights interpolate a field to that centroid; a point moves by the
+     *  displacement at its own radius, the interpolated one plus this
+     *  offset times the radial gradient (exact for linear fields). Zero
+     *  otherwise. */
+    double radial_offset = 0.;
   };
 
   /**
@@ -315,8 +227,11 @@ namespace impm
              PointSupport<dim>    &support) const
     {
       // One-dimensional weights of up to three nodes per direction.
-      std::array<std::array<double, 3>, dim>       w;
-      std::array<std::array<double, 3>, dim>       dw;
+      std::array<std::array<double, 3>, dim> w;
+      std::array<std::array<double, 3>, dim> dw;
+      // Axisymmetry, the radial direction: the factor of the axial gradient
+      // and the hoop weight (see Basis1D::gimp_radial()).
+      std::array<double, 3>                        radial_weight, hoop_weight;
       std::array<std::array<unsigned int, 3>, dim> index;
       std::array<unsigned int, dim>                count;
       for (unsigned int d = 0; d < dim; ++d)
@@ -334,6 +249,11 @@ namespace impm
                   const double dist = x - grid.node_coordinate(d, cell + k);
                   Basis1D::standard(
                     dist, h, k == 1, w[d][count[d]], dw[d][count[d]]);
+                  if (d == 0)
+                    {
+                      radial_weight[count[d]] = w[d][count[d]];
+                      hoop_weight[count[d]]   = w[d][count[d]] / x;
+                    }
                   index[d][count[d]] = cell + k;
                   ++count[d];
                 }
@@ -366,6 +286,16 @@ namespace impm
                   AssertThrow(count[d] < 3,
                               ExcMessage("A GIMP domain couples to more than "
                                          "three nodes in one direction."));
+                  if (d == 0 && grid.axisymmetric)
+                    Basis1D::gimp_radial(x - node,
+                                         h,
+                                         lp,
+                                         grid.lower[d] - node,
+                                         grid.upper[d] - node,
+                                         node,
+                                         radial_weight[count[d]],
+                                         derivative,
+                                         hoop_weight[count[d]]);
                   w[d][count[d]]     = weight;
                   dw[d][count[d]]    = derivative;
                   index[d][count[d]] = i;
@@ -374,7 +304,15 @@ namespace impm
             }
         }
 
-      // Tensor product.
+      if (grid.axisymmetric && type == BasisType::gimp)
+        {
+          double centroid = 0.;
+          for (unsigned int k = 0; k < count[0]; ++k)
+            centroid += radial_weight[k] * grid.node_coordinate(0, index[0][k]);
+          support.radial_offset = position[0] - centroid;
+        }
+      // Tensor product; in axisymmetry the radial factors of the weights
+      // and of the axial gradient are the radius-weighted averages.
       support.n_nodes = 0;
       std::array<unsigned int, dim> k{};
       while (true)
@@ -385,16 +323,27 @@ namespace impm
           for (unsigned int d = 0; d < dim; ++d)
             {
               ijk[d] = index[d][k[d]];
-              weight *= w[d][k[d]];
+              weight *= (d == 0 && grid.axisymmetric) ? radial_weight[k[d]] :
+                                                        w[d][k[d]];
             }
           for (unsigned int g = 0; g < dim; ++g)
             {
               double value = 1.;
               for (unsigned int d = 0; d < dim; ++d)
-                value *= (d == g) ? dw[d][k[d]] : w[d][k[d]];
+                value *= (d == g)                      ? dw[d][k[d]] :
+                         (d == 0 && grid.axisymmetric) ? radial_weight[k[d]] :
+                                                         w[d][k[d]];
               gradient[g] = value;
             }
-          const unsigned int n = support.n_nodes++;
+          const unsigned int n = support.n_nodes;
+          if (grid.axisymmetric)
+            {
+              double hoop = hoop_weight[k[0]];
+              for (unsigned int d = 1; d < dim; ++d)
+                hoop *= w[d][k[d]];
+              support.hoop_weights[n] = hoop;
+            }
+          ++support.n_nodes;
           support.nodes[n]     = grid.node_index(ijk);
           support.weights[n]   = weight;
           support.gradients[n] = gradient;
@@ -453,6 +402,21 @@ namespace impm
               if (d == axis)
                 weight *=
                   Basis1D::hat(position[d] + sign * half_length[d] - node, h);
+              else if (d == 0 && grid.axisymmetric)
+                {
+                  // The face is a ring: its radius-weighted average.
+                  double w, derivative, hoop;
+                  Basis1D::gimp_radial(position[d] - node,
+                                       h,
+                                       half_length[d],
+                                       grid.lower[d] - node,
+                                       grid.upper[d] - node,
+                                       node,
+                                       w,
+                                       derivative,
+                                       hoop);
+                  weight *= w;
+                }
               else
                 {
                   double w, derivative;

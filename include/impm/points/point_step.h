@@ -40,12 +40,13 @@ namespace impm
     /** The inverse of the true increment (from the nodal displacements),
      *  which maps the gradients to the current configuration. */
     Tensor<2, dim> deformation_increment_inverse;
-    /** Axisymmetry only: @f$1/r^n@f$, the inverse of the point's radius at
-     *  the start of the step (zero otherwise: no hoop terms). */
-    double inverse_radius = 0.;
+    /** Whether the point is a ring about an axis (Grid/Axisymmetric): its
+     *  support's hoop weights then give the hoop terms. */
+    bool axisymmetric = false;
     /** Axisymmetry only: the hoop stretch of the current iterate,
-     *  @f$\Delta F_{\theta\theta} = 1 + \Delta u_r / r^n@f$ (1
-     *  otherwise). */
+     *  @f$\Delta F_{\theta\theta} = 1 + \sum_v \bar N_{\theta,v}
+     *  \Delta u_{v,r}@f$, the average of @f$1 + \Delta u_r / r^n@f$ over
+     *  the point's ring (1 otherwise). */
     double hoop_increment = 1.;
     /** Initial volume @f$V_p^0@f$ (in axisymmetry that of its ring). */
     double initial_volume;
