@@ -4,7 +4,7 @@
 # a non-zero exit and one error line naming the file and the cause, and leave
 # only complete files under final names: steps.csv and newton.csv end with
 # whole rows, every point file reads with VTK's XML readers, no *.tmp file
-# and no summary.json is left.
+# and no summary.json is left. Checkpoints and HDF5 files too (cases 4, 5).
 # On two processes, also: one process alone cannot write (the others must
 # stop with its message, not wait for it).
 # On two processes mpiexec runs each process under the limit through bash,
@@ -74,4 +74,35 @@ if [ ${#launcher[@]} -gt 0 ]; then
     fail "the error does not name the process, the file and the cause"
   grep -q "MPI_ABORT" log.txt && fail "the communicator was aborted instead of stopping together"
 fi
+# 4. Checkpoints: the first cut at a 30 kB limit (MPI-IO reports no short
+#    write; the file ends at the limit) is refused, nothing of it left; at
+#    170 kB the first (156 kB) is written and the next refused before it
+#    starts (the last one's size, with a tenth more, does not fit), the
+#    first kept and still complete.
+check_checkpoint() {
+  local status=$1 pattern=$2
+  [ "$status" -eq 124 ] && fail "no exit within 120 s (a hang)"
+  [ "$status" -eq 0 ] && fail "the run did not stop"
+  [ "$(grep -c '^Error: ' log.txt)" -eq 1 ] || fail "not exactly one error line"
+  grep -qE "^Error: (process [0-9]+: )?$pattern" log.txt || { cat log.txt; fail "the error does not say what failed"; }
+  [ -e results/checkpoint.tmp ] && fail "a partial checkpoint was left"
+  grep -q "An error occurred in line" log.txt && fail "deal.II's exception text was printed"
+  return 0
+}
+checkpoints=("${settings[@]}" --set "Output/Interval=0" --set "Checkpoint/Interval=1")
+limited 30 "${checkpoints[@]}" > log.txt 2>&1
+check_checkpoint $? "Writing the checkpoint file results/checkpoint\.tmp/grid_variable\.data failed \(File too large: it reached the file-size limit\); no checkpoint has been written\.$"
+[ -e results/checkpoint ] && fail "a checkpoint was published"
+limited 170 "${checkpoints[@]}" > log.txt 2>&1
+check_checkpoint $? "Not writing the checkpoint: a file of about [0-9.]+ kB exceeds this process's file-size limit of 170 kB \(ulimit -f\); the last checkpoint is kept\.$"
+[ -e results/checkpoint/manifest.txt ] || fail "the first checkpoint was not kept"
+grep -q "^control.converged steps = 1$" results/checkpoint/state.txt ||
+  fail "the kept checkpoint is not the first step's"
+# 5. HDF5 point files (one file for all processes, written by HDF5 through
+#    MPI-IO): their size is known before they are written and checked, so
+#    a full disk leaves neither HDF5's error report nor a .tmp file.
+limited 20 "${settings[@]}" --set "Output/Interval=1" --set "Output/Format=hdf5" > log.txt 2>&1
+check_checkpoint $? "Not writing the point file results/points_00000\.h5: a file of about [0-9.]+ kB exceeds this process's file-size limit of 20 kB \(ulimit -f\)$"
+grep -q "HDF5-DIAG" log.txt && fail "HDF5's error report was printed"
+ls results/*.h5.tmp > /dev/null 2>&1 && fail "a .tmp file was left"
 echo "disk_full: the runs stopped with one clear line and complete files"

@@ -4,8 +4,10 @@
 #include <impm/io/atomic_file.h>
 #include <impm/io/checkpoint.h>
 #include <impm/io/checkpoint_manifest.h>
+#include <impm/io/free_space.h>
 #include <impm/io/scene_record.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
@@ -89,6 +91,35 @@ namespace impm
                                  " failed" + system_reason() + ".");
     }
 
+    /** The total size of the files in @p directory and the largest one's
+     *  (zero if it does not exist). */
+    std::pair<std::uintmax_t, std::uintmax_t>
+    directory_size(const std::string &directory)
+    {
+      std::uintmax_t  total = 0, largest = 0;
+      std::error_code code;
+      for (const auto &entry : fs::directory_iterator(directory, code))
+        if (entry.is_regular_file(code))
+          {
+            const std::uintmax_t size = entry.file_size(code);
+            if (!code)
+              {
+                total += size;
+                largest = std::max(largest, size);
+              }
+          }
+      return {total, largest};
+    }
+
+    /** What a failed write leaves of the checkpoints in @p base. */
+    std::string
+    kept_or_none(const fs::path &base)
+    {
+      return is_complete(base / complete_name) ?
+               "; the last checkpoint is kept" :
+               "; no checkpoint has been written";
+    }
+
     /** The content of @p path; a CollectiveError naming it if unreadable. */
     std::string
     read_text(const std::string &path, const std::string &what)
@@ -124,15 +155,36 @@ namespace impm
     run_collectively(communicator, [&]() {
       if (root)
         {
+          // The space for a checkpoint about as large as the last one.
+          const auto [bytes, largest] =
+            directory_size((base / complete_name).string());
+          const std::string shortage = space_shortage(output_directory,
+                                                      bytes + bytes / 10,
+                                                      largest + largest / 10,
+                                                      "the checkpoint");
+          if (!shortage.empty())
+            throw std::runtime_error(shortage +
+                                     "; the last checkpoint is kept.");
           fs::remove_all(base / partial_name);
           fs::create_directories(base / partial_name);
         }
     });
-    // deal.II's save is collective and reports its own failures.
+    // deal.II's save is collective and reports its own failures, but not a
+    // write cut short at the file-size limit.
     save_grid((base / partial_name / grid_name).string());
     run_collectively(communicator, [&]() {
       if (!root)
         return;
+      for (const auto &entry : fs::directory_iterator(base / partial_name))
+        if (reached_file_size_limit(entry.path().string()))
+          {
+            const std::string name = entry.path().string();
+            fs::remove_all(base / partial_name);
+            throw std::runtime_error(
+              "Writing the checkpoint file " + name +
+              " failed (File too large: it reached the file-size limit)" +
+              kept_or_none(base) + ".");
+          }
       // Plain writes: the directory is not published yet, and the manifest
       // syncs every file it names.
       write_checked((base / partial_name / state_name).string(),

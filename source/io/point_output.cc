@@ -2,6 +2,7 @@
 
 #include <impm/base/errors.h>
 #include <impm/io/atomic_file.h>
+#include <impm/io/free_space.h>
 #include <impm/io/point_output.h>
 
 #include <boost/archive/text_iarchive.hpp>
@@ -89,7 +90,34 @@ namespace impm
       DataOutBase::DataOutFilterFlags(/*filter_duplicate_vertices=*/false,
                                       /*xdmf_hdf5_output=*/true));
     this->write_filtered_data(filter);
-    this->write_hdf5_parallel(filter, temporary, communicator);
+    // The file's size, known before it is written: every process checks
+    // that it fits (space and file-size limit), so that a full disk stops
+    // the run before HDF5 leaves a damaged file and its own error report.
+    std::uintmax_t bytes = filter.n_nodes() * dim;
+    for (unsigned int set = 0; set < filter.n_data_sets(); ++set)
+      bytes += filter.n_nodes() * filter.get_data_set_dim(set);
+    bytes = Utilities::MPI::sum(bytes * sizeof(double) +
+                                  filter.n_cells() * sizeof(unsigned int),
+                                communicator);
+    const std::uintmax_t with_metadata = bytes + bytes / 10 + 65536;
+    throw_if_any_failed(space_shortage(directory,
+                                       with_metadata,
+                                       with_metadata,
+                                       "the point file " + directory + "/" +
+                                         file),
+                        communicator);
+    try
+      {
+        this->write_hdf5_parallel(filter, temporary, communicator);
+      }
+    catch (const std::exception &exception)
+      {
+        // Collective: every process took part in the failed write.
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          std::remove(temporary.c_str());
+        throw CollectiveError("Writing the file " + directory + "/" + file +
+                              " failed (" + one_line_message(exception) + ").");
+      }
     // The entry names the file as the series will find it.
     xdmf_entries.push_back(
       this->create_xdmf_entry(filter, file, time, communicator));
