@@ -41,7 +41,10 @@
 #   chaotic (at h = 0.0625 m KLU itself cuts one, and GMRES with a cap of
 #   1e-3 too but not with 1e-2; here with coarse size 50 GMRES cuts one, 712
 #   iterations), so the check is within 2.5 times KLU's iterations and at
-#   most one more cut.
+#   most three more cuts: since 'Solver/Steady steps before growth' the
+#   step control tries to grow the increment back after a cut, and each
+#   try that fails is a cut too (GMRES here: 3 cuts, 61 steps, 502
+#   iterations, against 1 cut, 712 iterations without the growth).
 # Usage: hard_cases_iterative.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
 tests=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -113,7 +116,7 @@ near() {
     fail "$name: GMRES needed more than $quarters/4 times KLU's Newton iterations"
 }
 near contact_plate_force_driven "$tests/contact_plate_force_driven.prm" 5 0
-near strip_footing_mohr_coulomb "$tests/../prm/strip_footing_mohr_coulomb.prm" 10 1
+near strip_footing_mohr_coulomb "$tests/../prm/strip_footing_mohr_coulomb.prm" 10 3
 [ "$n_same" -ge 21 ] || fail "only $n_same scenes compared"
 [ "$n_path" -eq 2 ] || fail "the path-dependent scenes were not all found"
 echo "hard_cases_iterative: $n_same scenes give KLU's answers with GMRES and a" \

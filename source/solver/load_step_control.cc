@@ -10,6 +10,7 @@ namespace impm
     : parameters(parameters)
     , nominal_step(1. / parameters.n_load_steps)
     , step_size(nominal_step)
+    , n_steady_needed(parameters.steady_steps)
   {}
 
 
@@ -42,13 +43,27 @@ namespace impm
     if (record.outcome == NewtonOutcome::converged)
       {
         ++n_converged;
-        load_factor = next;
-        // An easy step doubles the next, but not to an increment a coupling
+        ++n_steady;
+        untried_steady_growth = false;
+        load_factor           = next;
+        // An easy step doubles the next, and so does a run of steady steps
+        // below the nominal increment; not to an increment a coupling
         // refused (a rigid body's motion is proportional to it).
-        if (parameters.step_control &&
-            record.n_iterations() <= parameters.easy_iterations &&
-            std::min(2. * step_size, nominal_step) < refused_increment)
-          step_size = std::min(2. * step_size, nominal_step);
+        const double grown = std::min(2. * step_size, nominal_step);
+        if (!parameters.step_control || !(grown < refused_increment) ||
+            grown == step_size)
+          return;
+        if (record.n_iterations() <= parameters.easy_iterations)
+          {
+            step_size = grown;
+            n_steady  = 0;
+          }
+        else if (n_steady_needed > 0 && n_steady >= n_steady_needed)
+          {
+            step_size             = grown;
+            n_steady              = 0;
+            untried_steady_growth = true;
+          }
         return;
       }
 
@@ -81,6 +96,12 @@ namespace impm
                               " Relative residuals:" + failures.str(),
                             load_factor);
     step_size /= 2.;
+    n_steady = 0;
+    // A growth by steady steps that failed at once: the next needs twice
+    // as many.
+    if (untried_steady_growth)
+      n_steady_needed *= 2;
+    untried_steady_growth = false;
     if (step_size < parameters.minimum_step)
       throw LoadStepFailure(
         message.str() +
@@ -98,6 +119,12 @@ namespace impm
     state.set("control.load factor", load_factor);
     state.set("control.step size", step_size);
     state.set("control.converged steps", static_cast<double>(n_converged));
+    if (parameters.steady_steps > 0)
+      {
+        state.set("control.steady steps", static_cast<double>(n_steady));
+        state.set("control.steady steps needed",
+                  static_cast<double>(n_steady_needed));
+      }
   }
 
 
@@ -109,5 +136,12 @@ namespace impm
     step_size   = state.get_double("control.step size");
     n_converged =
       static_cast<unsigned int>(state.get_double("control.converged steps"));
+    if (parameters.steady_steps > 0)
+      {
+        n_steady =
+          static_cast<unsigned int>(state.get_double("control.steady steps"));
+        n_steady_needed = static_cast<unsigned int>(
+          state.get_double("control.steady steps needed"));
+      }
   }
 } // namespace impm

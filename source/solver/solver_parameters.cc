@@ -180,6 +180,16 @@ namespace impm
                           "A step converged in at most this many Newton "
                           "iterations doubles the next load increment (up to "
                           "the nominal one).");
+        prm.declare_entry("Steady steps before growth",
+                          "3",
+                          Patterns::Integer(0),
+                          "After a cut: once this many steps in a row have "
+                          "converged at the cut increment, the next is "
+                          "doubled even if none was easy (scenes whose steps "
+                          "all need more than 'Easy step iterations' stay "
+                          "at the cut size otherwise); each such doubling "
+                          "that fails doubles the number needed for the next "
+                          "one. 0: only easy steps grow the increment.");
         prm.declare_entry("Maximum point increment",
                           "1",
                           Patterns::Double(0.),
@@ -240,6 +250,7 @@ namespace impm
       minimum_step              = prm.get_double("Minimum load step");
       divergence_factor         = prm.get_double("Divergence factor");
       easy_iterations           = prm.get_integer("Easy step iterations");
+      steady_steps              = prm.get_integer("Steady steps before growth");
       maximum_point_increment   = prm.get_double("Maximum point increment");
       estimate_condition        = prm.get_bool("Estimate condition number");
       prm.leave_subsection();

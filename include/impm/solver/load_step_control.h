@@ -92,6 +92,14 @@ namespace impm
      *  to it (not kept in a checkpoint: a resumed run may try it once
      *  more). */
     double refused_increment = std::numeric_limits<double>::infinity();
+    /** Steps converged in a row at the current increment. */
+    unsigned int n_steady = 0;
+    /** The steady steps a growth needs ('Solver/Steady steps before
+     *  growth', doubled by each grown step that failed). */
+    unsigned int n_steady_needed;
+    /** Whether the current increment was grown by a steady run and no step
+     *  has converged at it yet. */
+    bool untried_steady_growth = false;
     /** Each failed attempt of the run, for the final error message. */
     std::ostringstream failures;
   };

@@ -54,6 +54,9 @@ namespace impm
       double divergence_factor;
       /** A step that needs at most this many iterations may grow the next. */
       unsigned int easy_iterations;
+      /** After a cut, grow after this many converged steps in a row (0:
+       *  only easy steps grow). */
+      unsigned int steady_steps;
       /** Largest point displacement of one step, in cells (step control). */
       double maximum_point_increment;
       /** Estimate the condition number of each step's first matrix. */
