@@ -1,0 +1,84 @@
+// The load-step control's cuts and growth (LoadStepControl), driven by
+// made-up Newton outcomes: 10 nominal steps (increment 0.1), 'Easy step
+// iterations' = 4, 'Steady steps before growth' = 3 (and 0 for the rule
+// before it). Each line: the attempt's outcome and iterations, then the
+// next attempt's start and increment. Expected by hand:
+//   a failure halves the increment (0.1 -> 0.05);
+//   three steps of 6 iterations in a row at 0.05 double the next (0.1);
+//   that doubled step failing at once halves it and doubles the steps
+//   needed (6): five more steady steps keep 0.05, the sixth grows it;
+//   at the nominal increment nothing grows further;
+//   after a cut an easy step (3 iterations) doubles at once;
+//   with 'Steady steps before growth' = 0 steps of 6 iterations never grow
+//   the increment back.
+
+#include <impm/solver/load_step_control.h>
+#include <impm/solver/newton_solver.h>
+#include <impm/solver/solver_parameters.h>
+
+#include <iomanip>
+#include <iostream>
+
+using namespace impm;
+
+namespace
+{
+  Parameters::Solver
+  make_parameters(const unsigned int steady_steps)
+  {
+    Parameters::Solver parameters{};
+    parameters.n_load_steps            = 10;
+    parameters.step_control            = true;
+    parameters.minimum_step            = 1e-4;
+    parameters.easy_iterations         = 4;
+    parameters.steady_steps            = steady_steps;
+    parameters.maximum_point_increment = 1.;
+    return parameters;
+  }
+
+  /** One attempt: converged in @p iterations, or failed (iteration limit). */
+  void
+  attempt(LoadStepControl   &control,
+          const bool         converged,
+          const unsigned int iterations)
+  {
+    NewtonRecord record;
+    record.outcome =
+      converged ? NewtonOutcome::converged : NewtonOutcome::iteration_limit;
+    record.residuals.assign(iterations + 1, 1.);
+    control.update(record);
+    std::cout << (converged ? "converged in " : "failed after ") << iterations
+              << ": next from " << control.start() << " by "
+              << control.target() - control.start() << std::endl;
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  std::cout << std::setprecision(6);
+  {
+    std::cout << "Steady steps before growth = 3" << std::endl;
+    const Parameters::Solver parameters = make_parameters(3);
+    LoadStepControl          control(parameters);
+    attempt(control, false, 20);
+    for (unsigned int i = 0; i < 3; ++i)
+      attempt(control, true, 6);
+    attempt(control, false, 20);
+    for (unsigned int i = 0; i < 6; ++i)
+      attempt(control, true, 6);
+    attempt(control, true, 6);
+    attempt(control, false, 20);
+    attempt(control, true, 3);
+  }
+  {
+    std::cout << "Steady steps before growth = 0" << std::endl;
+    const Parameters::Solver parameters = make_parameters(0);
+    LoadStepControl          control(parameters);
+    attempt(control, false, 20);
+    for (unsigned int i = 0; i < 6; ++i)
+      attempt(control, true, 6);
+  }
+}
