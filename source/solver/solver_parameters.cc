@@ -159,9 +159,10 @@ namespace impm
                           "solve fails (iteration limit, divergence, a "
                           "non-finite value, an inverted point) is restarted "
                           "from the last converged state with half the load "
-                          "increment; easy steps grow it again, up to the "
-                          "nominal 1/(Load steps). If false, a failed step "
-                          "stops the run.");
+                          "increment; easy steps grow it again (and runs of "
+                          "steady ones, 'Steady steps before growth'), up to "
+                          "the nominal 1/(Load steps). If false, a failed "
+                          "step stops the run.");
         prm.declare_entry("Minimum load step",
                           "1e-4",
                           Patterns::Double(1e-12, 1.),
