@@ -11,7 +11,10 @@
 #  3. on one process only: killed with SIGKILL at four moments drawn with a
 #     fixed seed (0 to 0.15 s after the run has done a step), resumed after each kill (started afresh if no checkpoint
 #     was complete yet) and finally run to the end: the same final summary,
-#     and every point file complete and readable by VTK's XML readers.
+#     and every point file complete and readable by VTK's XML readers;
+#  4. on MPIEXEC N processes only: stopped and resumed on N processes, the
+#     same bytes as the uninterrupted run on N (steps.csv and newton.csv
+#     without timings, the summary).
 # Usage: resume.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -86,5 +89,30 @@ if [ ${#launcher[@]} -eq 0 ]; then
     { cat kills.txt check.txt; fail "a point file is incomplete after the kills"; }
   [ -f results/summary.json ] || fail "no summary.json after the last part"
   cat kills.txt
+fi
+# 4. On MPIEXEC N processes throughout: the uninterrupted run and the one
+#    stopped after step 10 and resumed from step 9 write the same bytes
+#    (steps.csv and newton.csv without their timings, and the test
+#    summary): a resume on the same number of processes continues
+#    identically, not only within the suite's tolerances.
+if [ ${#launcher[@]} -gt 0 ]; then
+  rm -rf results
+  "${launcher[@]}" "$impm" "$scene" "${settings[@]}" > same_full.txt 2>&1 ||
+    fail "the uninterrupted run on ${launcher[2]} processes failed"
+  untimed results/steps.csv > same_full_steps.csv
+  untimed results/newton.csv > same_full_newton.csv
+  summary same_full.txt > same_full_summary.txt
+  rm -rf results
+  "${launcher[@]}" "$impm" "$scene" "${settings[@]}" --set "Checkpoint/Interval=3" \
+    --stop-after-step 10 > same_part1.txt 2>&1 || fail "the first part on ${launcher[2]} processes failed"
+  "${launcher[@]}" "$impm" "$scene" "${settings[@]}" --set "Checkpoint/Interval=3" \
+    --resume > same_part2.txt 2>&1 || fail "the resumed run on ${launcher[2]} processes failed"
+  untimed results/steps.csv > same_resumed_steps.csv
+  untimed results/newton.csv > same_resumed_newton.csv
+  summary same_part2.txt > same_resumed_summary.txt
+  for part in steps.csv newton.csv summary.txt; do
+    cmp -s "same_full_$part" "same_resumed_$part" ||
+      fail "the resumed run on ${launcher[2]} processes is not bit-identical ($part)"
+  done
 fi
 echo "resume: the resumed runs end in the state of the uninterrupted one"
