@@ -10,7 +10,9 @@
 #     the impact);
 #  2. the same block thrown sideways at 20 m/s without the plate: it leaves
 #     the grid at speed; the run ends with one line naming the step, the
-#     point and the grid, and a non-zero exit code, steps.csv complete.
+#     point and the grid, and a non-zero exit code, steps.csv complete;
+#  3. thrown without gravity (no load at all), implicit and explicit: it
+#     leaves the grid in the step a rigid translation predicts.
 # Usage: inertia_hard_cases.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -44,4 +46,32 @@ grep -q "^Error: Load step [0-9]*: material point [0-9]* (initially at .*) moved
 columns=$(head -1 results/steps.csv | tr ',' '\n' | wc -l)
 awk -F, -v n="$columns" 'NF != n { exit 1 }' results/steps.csv || fail "a row of steps.csv is incomplete"
 echo "thrown off the grid: $(grep '^Error: ' log.txt | cut -c1-100)..."
+# 3. The same throw without gravity: no load at all, so the inertial force
+#    is of round-off size and the residual's reference is floored by the
+#    momentum (Inertia's reference force); before, Newmark's first step
+#    never converged ("iteration limit" down to 'Minimum load step'). The
+#    block translates rigidly at 20 m/s. Its right column of points is
+#    initially at x = 1.46875 m. With the trapezoidal rule, a step of
+#    0.01 s would move it 0.2 m, more than a cell (0.125 m), so the step
+#    control halves it, and the column passes x = 2 m in step 6 (1.46875 +
+#    6 x 0.1 = 2.06875 m); with explicit MUSL at 0.0016 s (below the stable
+#    0.0017 s) in step 17 (1.46875 + 17 x 0.032 = 2.01275 m). The steps
+#    before converge.
+for case in "Newmark 0.01 6 2.06875" "explicit MUSL 0.0016 17 2.01275"; do
+  read -r -a words <<< "$case"
+  n=${#words[@]}
+  integrator=${words[*]:0:n-3} time_step=${words[n-3]} step=${words[n-2]} x=${words[n-1]}
+  rm -rf results
+  "${launcher[@]}" "$impm" "$scene" --set "Number of rigid bodies=0" \
+    --set "Gravity/Enabled=false" --set "Inertia/Integrator=$integrator" \
+    --set "Time/Time step=$time_step" \
+    --set "Inertia/Initial velocity=20; 0" > log.txt 2>&1 &&
+    fail "$integrator: the block thrown off the grid without a load did not stop the run"
+  [ "$(grep -c '^Error: ' log.txt)" -eq 1 ] || { cat log.txt; fail "$integrator: not one error line"; }
+  grep -q "^Error: Load step $step: material point [0-9]* (initially at 1.46875 [0-9.]*) moved to ($x [0-9.]*), outside the background grid \[0 0\] - \[2 3\]" log.txt ||
+    { cat log.txt; fail "$integrator: the block did not leave the grid in step $step at $x m"; }
+  [ "$(awk -F, 'NR > 1 && $5 == 1' results/steps.csv | wc -l)" -eq $((step - 1)) ] ||
+    fail "$integrator: the steps before did not all converge"
+  echo "thrown without a load ($integrator): $(grep '^Error: ' log.txt | cut -c1-100)..."
+done
 echo "inertia_hard_cases: passed"

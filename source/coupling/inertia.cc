@@ -350,8 +350,8 @@ namespace impm
         const double c3  = 1. / (2. * integrator.beta) - 1.;
         const double k_a = integrator.alpha_m / (1. - integrator.alpha_f);
         const double k_r = integrator.alpha_f / (1. - integrator.alpha_f);
-        double       norm_squared = 0.;
-        force_on_material         = Tensor<1, dim>();
+        double       norm_squared = 0., momentum_squared = 0.;
+        force_on_material = Tensor<1, dim>();
         // M times the increment: lumped, or the consistent matrix's
         // product (through the points).
         const std::vector<double> mass_times_increment =
@@ -365,6 +365,7 @@ namespace impm
             {
               const double p = nodes.momentum(i);
               const double q = nodes.mass_acceleration(i);
+              momentum_squared += c2 * c2 * p * p;
               // M a^{n+1}
               const double mass_times_acceleration =
                 c1 * (integrator.consistent_mass ?
@@ -388,9 +389,18 @@ namespace impm
               norm_squared += force * force;
               force_on_material[grid.component(i)] += force;
             }
-        inertial_force_norm = std::sqrt(
-          Utilities::MPI::sum(norm_squared,
-                              grid.get_triangulation().get_communicator()));
+        // The reference for the residual: the inertial force, floored by
+        // a millionth of its momentum part M v / (beta dt). A body moving
+        // freely (no load, no acceleration) has an inertial force of
+        // round-off size, made of parts of that size: without the floor
+        // its residual could never fall below the tolerance relative to it.
+        const MPI_Comm communicator =
+          grid.get_triangulation().get_communicator();
+        const double sum_norm = Utilities::MPI::sum(norm_squared, communicator);
+        const double sum_momentum =
+          Utilities::MPI::sum(momentum_squared, communicator);
+        inertial_force_norm =
+          std::hypot(std::sqrt(sum_norm), 1e-6 * std::sqrt(sum_momentum));
       }
 
       double
