@@ -47,7 +47,7 @@ stage() { printf '\n== %s (%s s)\n' "$1" "$(elapsed)"; }
   echo "compiler:   $(c++ --version | head -1)"
   echo "build type: $(sed -n 's/^CMAKE_BUILD_TYPE:STRING=//p' "$root/build/CMakeCache.txt" 2>/dev/null)"
   echo "deal.II:    $(dpkg-query -W -f '${Version}' libdeal.ii-dev 2>/dev/null)"
-  echo "impm:       $impm, built $(date -u -r "$impm" '+%Y-%m-%d %H:%M UTC')"
+  echo "impm:       $(realpath --relative-to="$PWD" "$impm" 2>/dev/null || basename "$impm"), built $(date -u -r "$impm" '+%Y-%m-%d %H:%M UTC')"
   echo "commit:     $(git -C "$root" rev-parse --short HEAD 2>/dev/null)$(git -C "$root" diff --quiet HEAD -- source include 2>/dev/null || echo ' (sources modified in the work tree)')"
   echo "processes:  1 (serial runs, one at a time)"
   echo "load avg:   $(cut -d' ' -f1-3 /proc/loadavg) at the start"
