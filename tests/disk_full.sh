@@ -74,11 +74,12 @@ if [ ${#launcher[@]} -gt 0 ]; then
     fail "the error does not name the process, the file and the cause"
   grep -q "MPI_ABORT" log.txt && fail "the communicator was aborted instead of stopping together"
 fi
-# 4. Checkpoints: the first cut at a 30 kB limit (MPI-IO reports no short
-#    write; the file ends at the limit) is refused, nothing of it left; at
-#    170 kB the first (156 kB) is written and the next refused before it
-#    starts (the last one's size, with a tenth more, does not fit), the
-#    first kept and still complete.
+# 4. Checkpoints: the first cut at a limit of 30 blocks of 1,024 bytes
+#    (MPI-IO reports no short write; the file ends at the limit) is
+#    refused, nothing of it left; at 170 blocks (174 kB, as the message
+#    says in decimal units) the first (159 kB) is written and the next
+#    refused before it starts (the last one's size, with a tenth more, does
+#    not fit), the first kept and still complete.
 check_checkpoint() {
   local status=$1 pattern=$2
   [ "$status" -eq 124 ] && fail "no exit within 120 s (a hang)"
@@ -94,7 +95,7 @@ limited 30 "${checkpoints[@]}" > log.txt 2>&1
 check_checkpoint $? "Writing the checkpoint file results/checkpoint\.tmp/grid_variable\.data failed \(File too large: it reached the file-size limit\); no checkpoint has been written\.$"
 [ -e results/checkpoint ] && fail "a checkpoint was published"
 limited 170 "${checkpoints[@]}" > log.txt 2>&1
-check_checkpoint $? "Not writing the checkpoint: a file of about [0-9.]+ kB exceeds this process's file-size limit of 170 kB \(ulimit -f\); the last checkpoint is kept\.$"
+check_checkpoint $? "Not writing the checkpoint: a file of about [0-9.]+ kB exceeds this process's file-size limit of 174 kB \(ulimit -f\); the last checkpoint is kept\.$"
 [ -e results/checkpoint/manifest.txt ] || fail "the first checkpoint was not kept"
 grep -q "^control.converged steps = 1$" results/checkpoint/state.txt ||
   fail "the kept checkpoint is not the first step's"
@@ -102,7 +103,7 @@ grep -q "^control.converged steps = 1$" results/checkpoint/state.txt ||
 #    MPI-IO): their size is known before they are written and checked, so
 #    a full disk leaves neither HDF5's error report nor a .tmp file.
 limited 20 "${settings[@]}" --set "Output/Interval=1" --set "Output/Format=hdf5" > log.txt 2>&1
-check_checkpoint $? "Not writing the point file results/points_00000\.h5: a file of about [0-9.]+ kB exceeds this process's file-size limit of 20 kB \(ulimit -f\)$"
+check_checkpoint $? "Not writing the point file results/points_00000\.h5: a file of about [0-9.]+ kB exceeds this process's file-size limit of 20.5 kB \(ulimit -f\)$"
 grep -q "HDF5-DIAG" log.txt && fail "HDF5's error report was printed"
 ls results/*.h5.tmp > /dev/null 2>&1 && fail "a .tmp file was left"
 echo "disk_full: the runs stopped with one clear line and complete files"

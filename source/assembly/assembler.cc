@@ -75,7 +75,8 @@ namespace impm
           return false;
         }
     };
-    auto                                &point_steps = system.point_steps;
+    auto                                &point_steps  = system.point_steps;
+    const bool                           axisymmetric = system.axisymmetric();
     std::vector<ArrayView<const double>> point_properties;
     if (volume_coupling != nullptr)
       point_properties.resize(point_steps.size());
@@ -106,7 +107,7 @@ namespace impm
         step.deformation_increment_inverse = invert(dF);
         // Axisymmetry: the hoop stretch r^{n+1} / r^n (its average over
         // the point's ring).
-        if (step.axisymmetric)
+        if (axisymmetric)
           {
             double hoop_strain = 0.;
             for (unsigned int v = 0; v < s.n_nodes; ++v)
@@ -260,7 +261,8 @@ namespace impm
       void
       add_internal_force(NodalVector &internal_force) override
       {
-        auto &point_steps = this->system.point_steps;
+        auto      &point_steps  = this->system.point_steps;
+        const bool axisymmetric = this->system.axisymmetric();
         // The updated Lagrangian form keeps its mapped gradients for the
         // matrix of this iterate.
         if constexpr (maps_gradients)
@@ -288,7 +290,7 @@ namespace impm
                              gradients,
                              step.support.n_nodes,
                              forces.data());
-            if (step.axisymmetric)
+            if (axisymmetric)
               add_hoop_forces(step, forces.data());
             for (unsigned int k = 0; k < n; ++k)
               internal_force.local_element(step.dofs[k]) += forces[k];
@@ -300,6 +302,7 @@ namespace impm
       {
         const auto    &point_steps     = this->system.point_steps;
         Coupling<dim> *volume_coupling = this->volume_coupling;
+        const bool     axisymmetric    = this->system.axisymmetric();
         // One support's dense matrix (52 kB in 3D): on the heap.
         const auto stiffness = std::make_unique<PointStiffness<dim>>();
         std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>
@@ -313,13 +316,12 @@ namespace impm
             // A volume coupling's point term has no major symmetry.
             // The hoop terms are added to every entry (general).
             const bool symmetric =
-              volume_coupling == nullptr &&
+              volume_coupling == nullptr && !axisymmetric &&
               std::all_of(
                 group.points.begin(),
                 group.points.end(),
                 [&](const unsigned int p) {
-                  return point_steps[p].material->has_symmetric_tangent() &&
-                         !point_steps[p].axisymmetric;
+                  return point_steps[p].material->has_symmetric_tangent();
                 });
             stiffness->reset(group.n_nodes,
                              symmetric ? TangentSymmetry::major :
@@ -327,8 +329,7 @@ namespace impm
             const unsigned char *node_positions = group.node_positions.data();
             for (const unsigned int p : group.points)
               {
-                const PointStep<dim> &step         = point_steps[p];
-                const bool            axisymmetric = step.axisymmetric;
+                const PointStep<dim> &step = point_steps[p];
                 HoopTangent<dim>      hoop;
                 Tensor<4, dim>        tangent =
                   axisymmetric ?

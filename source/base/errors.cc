@@ -72,4 +72,20 @@ namespace impm
 
 
 
+  std::string
+  bytes_in_words(const double bytes)
+  {
+    const char  *units[] = {"B", "kB", "MB", "GB", "TB", "PB"};
+    double       value   = bytes;
+    unsigned int unit    = 0;
+    while (value >= 1000. && unit < 5)
+      {
+        value /= 1000.;
+        ++unit;
+      }
+    std::ostringstream out;
+    out.precision(3);
+    out << value << " " << units[unit];
+    return out.str();
+  }
 } // namespace impm

@@ -268,22 +268,6 @@ namespace impm
         return Utilities::MPI::sum(bytes, communicator);
       }
 
-      std::string
-      bytes_string(const double bytes)
-      {
-        const char  *units[] = {"B", "kB", "MB", "GB", "TB", "PB"};
-        double       value   = bytes;
-        unsigned int unit    = 0;
-        while (value >= 1000. && unit < 5)
-          {
-            value /= 1000.;
-            ++unit;
-          }
-        std::ostringstream out;
-        out.precision(3);
-        out << value << " " << units[unit];
-        return out.str();
-      }
       /** The estimated peak memory of a run, with the counts behind it. */
       struct MemoryEstimate
       {
@@ -338,10 +322,10 @@ namespace impm
         {
           std::ostringstream message;
           message.precision(3);
-          message << "The scene needs about " << bytes_string(estimate.bytes)
+          message << "The scene needs about " << bytes_in_words(estimate.bytes)
                   << " (" << estimate.n_cells << " cells, " << estimate.n_points
                   << " material points), more than the "
-                  << bytes_string(available) << " available to the "
+                  << bytes_in_words(available) << " available to the "
                   << Utilities::MPI::n_mpi_processes(communicator)
                   << " process(es): use fewer cells ('Grid/Number of "
                      "cells') or points, or more machines.";

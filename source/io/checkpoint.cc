@@ -163,8 +163,7 @@ namespace impm
                                                       largest + largest / 10,
                                                       "the checkpoint");
           if (!shortage.empty())
-            throw std::runtime_error(shortage +
-                                     "; the last checkpoint is kept.");
+            throw std::runtime_error(shortage + kept_or_none(base) + ".");
           fs::remove_all(base / partial_name);
           fs::create_directories(base / partial_name);
         }

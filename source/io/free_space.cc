@@ -1,10 +1,10 @@
+#include <impm/base/errors.h>
 #include <impm/io/free_space.h>
 
 #include <sys/resource.h>
 #include <sys/statvfs.h>
 
 #include <filesystem>
-#include <sstream>
 
 namespace impm
 {
@@ -19,21 +19,6 @@ namespace impm
         return RLIM_INFINITY;
       return limit.rlim_cur;
     }
-
-    /** @p bytes in the unit that suits them. */
-    std::string
-    readable(const std::uintmax_t bytes)
-    {
-      std::ostringstream text;
-      text.precision(3);
-      if (bytes >= (1u << 30))
-        text << bytes / double(1u << 30) << " GB";
-      else if (bytes >= (1u << 20))
-        text << bytes / double(1u << 20) << " MB";
-      else
-        text << bytes / 1024. << " kB";
-      return text.str();
-    }
   } // namespace
 
 
@@ -47,17 +32,17 @@ namespace impm
     const rlim_t limit = file_size_limit();
     if (limit != RLIM_INFINITY && largest_file >= limit)
       return "Not writing " + what + ": a file of about " +
-             readable(largest_file) +
-             " exceeds this process's file-size limit of " + readable(limit) +
-             " (ulimit -f)";
+             bytes_in_words(largest_file) +
+             " exceeds this process's file-size limit of " +
+             bytes_in_words(limit) + " (ulimit -f)";
     struct statvfs file_system;
     if (statvfs(directory.c_str(), &file_system) != 0)
       return "";
     const std::uintmax_t available =
       std::uintmax_t(file_system.f_bavail) * file_system.f_frsize;
     if (bytes > available)
-      return "Not writing " + what + ": about " + readable(bytes) +
-             " are needed and " + readable(available) + " are free in " +
+      return "Not writing " + what + ": about " + bytes_in_words(bytes) +
+             " are needed and " + bytes_in_words(available) + " are free in " +
              directory;
     return "";
   }

@@ -39,7 +39,6 @@ namespace impm
                            step.support);
         step.initial_volume = state.initial_volume();
         step.material       = &material_points.material_of(properties);
-        step.axisymmetric   = grid.cartesian().axisymmetric;
         for (unsigned int v = 0; v < step.support.n_nodes; ++v)
           {
             const auto *dofs = grid.node_dofs(step.support.nodes[v]);

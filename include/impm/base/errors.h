@@ -141,6 +141,15 @@ namespace impm
 
 
   /**
+   * @brief @p bytes for a message, in the decimal unit that suits them, to
+   * three digits ("156 kB", "2.16e+290 PB").
+   */
+  std::string
+  bytes_in_words(const double bytes);
+
+
+
+  /**
    * @brief @p text with every run of white space (line breaks included)
    * replaced by one blank, and none at either end.
    */

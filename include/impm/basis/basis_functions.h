@@ -229,9 +229,9 @@ namespace impm
       // One-dimensional weights of up to three nodes per direction.
       std::array<std::array<double, 3>, dim> w;
       std::array<std::array<double, 3>, dim> dw;
-      // Axisymmetry, the radial direction: the factor of the axial gradient
-      // and the hoop weight (see Basis1D::gimp_radial()).
-      std::array<double, 3>                        radial_weight, hoop_weight;
+      // Axisymmetry, the radial direction: the hoop weights (w and dw are
+      // then the radius-weighted averages, Basis1D::gimp_radial()).
+      std::array<double, 3>                        hoop_weight;
       std::array<std::array<unsigned int, 3>, dim> index;
       std::array<unsigned int, dim>                count;
       for (unsigned int d = 0; d < dim; ++d)
@@ -249,11 +249,8 @@ namespace impm
                   const double dist = x - grid.node_coordinate(d, cell + k);
                   Basis1D::standard(
                     dist, h, k == 1, w[d][count[d]], dw[d][count[d]]);
-                  if (d == 0)
-                    {
-                      radial_weight[count[d]] = w[d][count[d]];
-                      hoop_weight[count[d]]   = w[d][count[d]] / x;
-                    }
+                  if (d == 0 && grid.axisymmetric)
+                    hoop_weight[count[d]] = w[d][count[d]] / x;
                   index[d][count[d]] = cell + k;
                   ++count[d];
                 }
@@ -273,19 +270,7 @@ namespace impm
               for (long i = first; i <= last; ++i)
                 {
                   const double node = grid.node_coordinate(d, i);
-                  double       weight, derivative;
-                  Basis1D::gimp(x - node,
-                                h,
-                                lp,
-                                grid.lower[d] - node,
-                                grid.upper[d] - node,
-                                weight,
-                                derivative);
-                  if (weight == 0. && derivative == 0.)
-                    continue;
-                  AssertThrow(count[d] < 3,
-                              ExcMessage("A GIMP domain couples to more than "
-                                         "three nodes in one direction."));
+                  double       weight, derivative, hoop = 0.;
                   if (d == 0 && grid.axisymmetric)
                     Basis1D::gimp_radial(x - node,
                                          h,
@@ -293,9 +278,24 @@ namespace impm
                                          grid.lower[d] - node,
                                          grid.upper[d] - node,
                                          node,
-                                         radial_weight[count[d]],
+                                         weight,
                                          derivative,
-                                         hoop_weight[count[d]]);
+                                         hoop);
+                  else
+                    Basis1D::gimp(x - node,
+                                  h,
+                                  lp,
+                                  grid.lower[d] - node,
+                                  grid.upper[d] - node,
+                                  weight,
+                                  derivative);
+                  if (weight == 0. && derivative == 0.)
+                    continue;
+                  AssertThrow(count[d] < 3,
+                              ExcMessage("A GIMP domain couples to more than "
+                                         "three nodes in one direction."));
+                  if (d == 0)
+                    hoop_weight[count[d]] = hoop;
                   w[d][count[d]]     = weight;
                   dw[d][count[d]]    = derivative;
                   index[d][count[d]] = i;
@@ -308,11 +308,11 @@ namespace impm
         {
           double centroid = 0.;
           for (unsigned int k = 0; k < count[0]; ++k)
-            centroid += radial_weight[k] * grid.node_coordinate(0, index[0][k]);
+            centroid += w[0][k] * grid.node_coordinate(0, index[0][k]);
           support.radial_offset = position[0] - centroid;
         }
-      // Tensor product; in axisymmetry the radial factors of the weights
-      // and of the axial gradient are the radius-weighted averages.
+      // Tensor product (in axisymmetry with the radius-weighted radial
+      // factors).
       support.n_nodes = 0;
       std::array<unsigned int, dim> k{};
       while (true)
@@ -323,19 +323,16 @@ namespace impm
           for (unsigned int d = 0; d < dim; ++d)
             {
               ijk[d] = index[d][k[d]];
-              weight *= (d == 0 && grid.axisymmetric) ? radial_weight[k[d]] :
-                                                        w[d][k[d]];
+              weight *= w[d][k[d]];
             }
           for (unsigned int g = 0; g < dim; ++g)
             {
               double value = 1.;
               for (unsigned int d = 0; d < dim; ++d)
-                value *= (d == g)                      ? dw[d][k[d]] :
-                         (d == 0 && grid.axisymmetric) ? radial_weight[k[d]] :
-                                                         w[d][k[d]];
+                value *= (d == g) ? dw[d][k[d]] : w[d][k[d]];
               gradient[g] = value;
             }
-          const unsigned int n = support.n_nodes;
+          const unsigned int n = support.n_nodes++;
           if (grid.axisymmetric)
             {
               double hoop = hoop_weight[k[0]];
@@ -343,7 +340,6 @@ namespace impm
                 hoop *= w[d][k[d]];
               support.hoop_weights[n] = hoop;
             }
-          ++support.n_nodes;
           support.nodes[n]     = grid.node_index(ijk);
           support.weights[n]   = weight;
           support.gradients[n] = gradient;

@@ -40,9 +40,6 @@ namespace impm
     /** The inverse of the true increment (from the nodal displacements),
      *  which maps the gradients to the current configuration. */
     Tensor<2, dim> deformation_increment_inverse;
-    /** Whether the point is a ring about an axis (Grid/Axisymmetric): its
-     *  support's hoop weights then give the hoop terms. */
-    bool axisymmetric = false;
     /** Axisymmetry only: the hoop stretch of the current iterate,
      *  @f$\Delta F_{\theta\theta} = 1 + \sum_v \bar N_{\theta,v}
      *  \Delta u_{v,r}@f$, the average of @f$1 + \Delta u_r / r^n@f$ over

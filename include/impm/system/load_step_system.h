@@ -117,6 +117,15 @@ namespace impm
 
     /** @brief The per-point data of this step, in iteration order. */
     PointSteps<dim> point_steps;
+
+    /** @brief Whether the points are rings about an axis
+     *  (Grid/Axisymmetric): their supports' hoop weights then give the hoop
+     *  terms. */
+    bool
+    axisymmetric() const
+    {
+      return grid.cartesian().axisymmetric;
+    }
     /** @brief The points grouped by support. */
     std::vector<AssemblyGroup> assembly_groups;
 
