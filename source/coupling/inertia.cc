@@ -221,13 +221,19 @@ namespace impm
         start_residual.clear();
         current_points = &material_points;
         current_system = &system;
+        const MPI_Comm communicator =
+          grid.get_triangulation().get_communicator();
         if (integrator.is_explicit())
-          stable_step_size =
-            stable_time_step(material_points,
-                             system.point_steps,
-                             grid.cartesian(),
-                             integrator.courant_number,
-                             grid.get_triangulation().get_communicator());
+          stable_step_size = stable_time_step(material_points,
+                                              system.point_steps,
+                                              grid.cartesian(),
+                                              integrator.courant_number,
+                                              communicator);
+        else
+          // The momentum part of the inertial force, M v / (beta dt), whose
+          // size floors the residual's reference.
+          momentum_force =
+            nodes.momentum_norm() / (integrator.beta * time_step);
       }
 
       /** @brief Generalised-alpha weighs the start's residual; the first
@@ -350,8 +356,8 @@ namespace impm
         const double c3  = 1. / (2. * integrator.beta) - 1.;
         const double k_a = integrator.alpha_m / (1. - integrator.alpha_f);
         const double k_r = integrator.alpha_f / (1. - integrator.alpha_f);
-        double       norm_squared = 0., momentum_squared = 0.;
-        force_on_material = Tensor<1, dim>();
+        double       norm_squared = 0.;
+        force_on_material         = Tensor<1, dim>();
         // M times the increment: lumped, or the consistent matrix's
         // product (through the points).
         const std::vector<double> mass_times_increment =
@@ -365,7 +371,6 @@ namespace impm
             {
               const double p = nodes.momentum(i);
               const double q = nodes.mass_acceleration(i);
-              momentum_squared += c2 * c2 * p * p;
               // M a^{n+1}
               const double mass_times_acceleration =
                 c1 * (integrator.consistent_mass ?
@@ -394,13 +399,11 @@ namespace impm
         // freely (no load, no acceleration) has an inertial force of
         // round-off size, made of parts of that size: without the floor
         // its residual could never fall below the tolerance relative to it.
-        const MPI_Comm communicator =
-          grid.get_triangulation().get_communicator();
-        const double sum_norm = Utilities::MPI::sum(norm_squared, communicator);
-        const double sum_momentum =
-          Utilities::MPI::sum(momentum_squared, communicator);
         inertial_force_norm =
-          std::hypot(std::sqrt(sum_norm), 1e-6 * std::sqrt(sum_momentum));
+          std::hypot(std::sqrt(Utilities::MPI::sum(
+                       norm_squared,
+                       grid.get_triangulation().get_communicator())),
+                     1e-6 * momentum_force);
       }
 
       double
@@ -575,8 +578,11 @@ namespace impm
        *  unless generalised-alpha). */
       std::vector<double> start_residual;
       double              inertial_force_norm = 0.;
-      double              kinetic_energy      = 0.;
-      double              strain_energy       = 0.;
+      /** The size of the step's momentum part of the inertial force,
+       *  @f$|M v^n| / (\beta \Delta t)@f$ (implicit integrators). */
+      double momentum_force = 0.;
+      double kinetic_energy = 0.;
+      double strain_energy  = 0.;
       /** The inertial force of the last add_forces() (this process's
        *  owned DoFs) and of the accepted step (all). */
       Tensor<1, dim> force_on_material, accepted_force;

@@ -65,6 +65,14 @@ namespace impm
       return nodal_momentum.local_element(i);
     }
 
+    /** @brief The norm of the nodal momentum over all processes
+     *  (collective). */
+    double
+    momentum_norm() const
+    {
+      return nodal_momentum.l2_norm();
+    }
+
     /** @brief The mass times acceleration of local DoF @p i. */
     double
     mass_acceleration(const unsigned int i) const
