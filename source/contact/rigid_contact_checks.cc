@@ -181,16 +181,13 @@ namespace impm
     for (const auto &point : material_points.particles())
       {
         const PointStep<dim> &step = system.point_steps.of(point);
-        Point<dim>            x    = point.get_location();
-        const Tensor<1, dim>  half_length =
+        const Point<dim>      x =
+          point.get_location() + step.displacement(increment);
+        const Tensor<1, dim> half_length =
           PointState<dim>(point.get_properties()).domain_half_length();
         double largest_half_length = 0.;
         for (unsigned int d = 0; d < dim; ++d)
           largest_half_length = std::max(largest_half_length, half_length[d]);
-        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-          for (unsigned int i = 0; i < dim; ++i)
-            x[i] += step.support.weights[v] *
-                    increment.local_element(step.dofs[v * dim + i]);
         for (unsigned int b = 0; b < rigid_bodies.size(); ++b)
           {
             bool in_box = true;

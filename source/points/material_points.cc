@@ -404,16 +404,10 @@ namespace impm
     for (auto &point : particle_handler)
       {
         const PointStep<dim>        &step = point_steps.of(point);
-        const auto                  &s    = step.support;
         const MutablePointState<dim> state(point.get_properties());
 
-        // The displacement at the point (PointSupport::radial_offset).
-        Point<dim> position = point.get_location();
-        for (unsigned int v = 0; v < s.n_nodes; ++v)
-          for (unsigned int i = 0; i < dim; ++i)
-            position[i] +=
-              (s.weights[v] + s.radial_offset * s.gradients[v][0]) *
-              increment.local_element(step.dofs[v * dim + i]);
+        const Point<dim> position =
+          point.get_location() + step.displacement(increment);
 
         const Tensor<2, 3> F =
           step.full_deformation_increment() * state.deformation_gradient();

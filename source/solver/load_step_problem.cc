@@ -359,12 +359,8 @@ namespace impm
     double      largest   = 0.;
     for (const PointStep<dim> &step : system.point_steps)
       {
-        Tensor<1, dim> displacement;
-        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-          for (unsigned int i = 0; i < dim; ++i)
-            displacement[i] +=
-              step.support.weights[v] *
-              displacement_increment.local_element(step.dofs[v * dim + i]);
+        const Tensor<1, dim> displacement =
+          step.displacement(displacement_increment);
         for (unsigned int d = 0; d < dim; ++d)
           largest = std::max(largest, std::abs(displacement[d]) / cell_size[d]);
       }

@@ -53,6 +53,27 @@ namespace impm
     ConstitutiveUpdate update;
 
     /**
+     * @brief The point's own displacement for the nodal displacements
+     * @p increment (local DoFs): the weights' interpolation, plus in
+     * axisymmetric GIMP PointSupport::radial_offset times the radial
+     * gradient (the weights interpolate to the ring's centroid).
+     */
+    template <typename VectorType>
+    Tensor<1, dim>
+    displacement(const VectorType &increment) const
+    {
+      Tensor<1, dim> u;
+      for (unsigned int v = 0; v < support.n_nodes; ++v)
+        {
+          const double weight = support.weights[v] +
+                                support.radial_offset * support.gradients[v][0];
+          for (unsigned int i = 0; i < dim; ++i)
+            u[i] += weight * increment.local_element(dofs[v * dim + i]);
+        }
+      return u;
+    }
+
+    /**
      * @brief The increment the material sees, 3x3: deformation_increment
      * with the out-of-plane stretch hoop_increment (1 in plane strain).
      */
