@@ -163,6 +163,8 @@ plus rigid_displacement.prm "set Number of rigid bodies = 1\nsubsection Rigid bo
 expect rigid_displacement_components "Rigid body 1/Displacement" - -- "$work/rigid_displacement.prm"
 plus rigid_force_axis.prm "set Number of rigid bodies = 1\nsubsection Rigid body 1\n set Lower corner = 0, 9\n set Upper corner = 8, 10\n set Force-driven components = w\nend"
 expect rigid_force_component_name "'Rigid body 1/Force-driven components' = 'w' is not allowed: it must be a list of x, y, each at most once" - -- "$work/rigid_force_axis.prm"
+plus rigid_held_points.prm "set Number of rigid bodies = 1\nsubsection Rigid body 1\n set Lower corner = 0, 9\n set Upper corner = 8, 10\nend\nsubsection Material points\n set Move points = false\nend"
+expect rigid_with_held_points "'Material points/Move points' = false with a rigid body: .*the points must move" - -- "$work/rigid_held_points.prm"
 plus rigid_force_twice.prm "set Number of rigid bodies = 1\nsubsection Rigid body 1\n set Lower corner = 0, 9\n set Upper corner = 8, 10\n set Force-driven components = y, y\nend"
 expect rigid_force_component_twice "'Rigid body 1/Force-driven components' = 'y, y' is not allowed: each component at most once" - -- "$work/rigid_force_twice.prm"
 plus rigid_force_undriven.prm "set Number of rigid bodies = 1\nsubsection Rigid body 1\n set Lower corner = 0, 9\n set Upper corner = 8, 10\n set Force = 0, -5\nend"

@@ -332,6 +332,19 @@ namespace impm
                         Patterns::Bool(),
                         "GIMP only: scale the domain half-lengths with the "
                         "stretch U of F = RU (true) or keep them (false).");
+      prm.declare_entry(
+        "Move points",
+        "true",
+        Patterns::Bool(),
+        "true: the points move with the material through the grid (the "
+        "material point method). false: each point stays where it was "
+        "seeded, so the grid sees the material in its initial "
+        "configuration, as a finite element analysis without mesh update "
+        "does; the deformation gradient and the stress still accumulate. A "
+        "reference for small displacements that separates the effect of "
+        "the points' motion through the cells (with standard MPM the "
+        "quadrature drifts as they move: doc/hard_cases.md) from the rest. "
+        "Not with rigid bodies, which must meet the moving material.");
       prm.declare_entry("F-bar",
                         "false",
                         Patterns::Bool(),
@@ -380,6 +393,7 @@ namespace impm
       prm.enter_subsection("Material points");
       basis                  = basis_type_from_string(prm.get("Basis"));
       update_domains         = prm.get_bool("Update domains");
+      move_points            = prm.get_bool("Move points");
       f_bar                  = prm.get_bool("F-bar");
       cell_pressure_unknowns = prm.get_bool("Cell pressure unknowns");
       pressure_jump_stabilisation =

@@ -94,6 +94,12 @@ namespace impm
                                ": a body needs a density above 0.");
             }
         const auto &grid = parameters.grid;
+        if (!parameters.material_points.move_points &&
+            !parameters.rigid_bodies.empty())
+          throw InputError(
+            "'Material points/Move points' = false with a rigid body: a "
+            "rigid body moves through the grid and must meet the material "
+            "where it is, so the points must move (set it to true).");
         for (const auto &rigid_body : parameters.rigid_bodies)
           {
             // A force-driven body's path is not known in advance (checked

@@ -398,6 +398,7 @@ namespace impm
   MaterialPoints<dim>::advance(const PointSteps<dim> &point_steps,
                                const NodalVector     &increment,
                                const bool             update_domains,
+                               const bool             move_points,
                                const unsigned int     load_step)
   {
     std::string left_grid;
@@ -407,7 +408,8 @@ namespace impm
         const MutablePointState<dim> state(point.get_properties());
 
         const Point<dim> position =
-          point.get_location() + step.displacement(increment);
+          move_points ? point.get_location() + step.displacement(increment) :
+                        point.get_location();
 
         const Tensor<2, 3> F =
           step.full_deformation_increment() * state.deformation_gradient();

@@ -419,6 +419,9 @@ namespace impm
     if (parameters.material_points.basis == BasisType::gimp &&
         parameters.material_points.update_domains)
       list.push_back("GIMP domain update with the stretch");
+    if (!parameters.material_points.move_points)
+      list.push_back("points held where they were seeded (no motion "
+                     "through the grid)");
     return list;
   }
 
@@ -503,6 +506,7 @@ namespace impm
                             parameters.material_points.basis ==
                                 BasisType::gimp &&
                               parameters.material_points.update_domains,
+                            parameters.material_points.move_points,
                             record.step_number);
     // The step's per-point data is made anew for the next step. When it is
     // large, it is freed here and returned to the system, so that the

@@ -274,6 +274,9 @@ namespace impm
       BasisType basis;
       /** Whether GIMP domains stretch with the deformation. */
       bool update_domains;
+      /** Whether the points move with the material (false: they stay where
+       *  they were seeded, a small-displacement reference). */
+      bool move_points;
       /** Whether the points' volume changes are averaged per cell and body
        *  (FBar). */
       bool f_bar;

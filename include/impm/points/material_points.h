@@ -214,8 +214,10 @@ namespace impm
      * @brief End a converged load step: move each point with the grid's
      * displacement increment, compose its deformation gradient, store the
      * new stress and its material's state (Material::store_state()) and
-     * stretch its GIMP domain (if @p update_domains). The points are then in the cells of the step's
-     * start: sort_into_cells() follows.
+     * stretch its GIMP domain (if @p update_domains). The points are then
+     * in the cells of the step's start: sort_into_cells() follows. With
+     * @p move_points false a point keeps its position (everything else is
+     * updated).
      *
      * A point that leaves the grid (or becomes non-finite) stops the run
      * with an error naming it, the step, its positions and the grid.
@@ -223,12 +225,14 @@ namespace impm
      * @param point_steps The step's per-point data.
      * @param increment The converged displacement increment (ghosted).
      * @param update_domains Whether GIMP domains follow the stretch.
+     * @param move_points Whether the points move with the increment.
      * @param load_step The step's number, for messages.
      */
     void
     advance(const PointSteps<dim> &point_steps,
             const NodalVector     &increment,
             const bool             update_domains,
+            const bool             move_points,
             const unsigned int     load_step);
 
     /**
