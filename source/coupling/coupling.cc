@@ -545,6 +545,19 @@ namespace impm
 
 
 
+  template <int dim>
+  void
+  CouplingInputs<dim>::refuse_axisymmetry(const std::string &coupling) const
+  {
+    if (parameters.grid.axisymmetric)
+      throw InputError(coupling + " is not yet available with "
+                                  "Grid/Axisymmetric = true.");
+  }
+
+
+
+  template struct CouplingInputs<2>;
+  template struct CouplingInputs<3>;
   template class Coupling<2>;
   template class Coupling<3>;
   template class Couplings<2>;

@@ -88,7 +88,12 @@ namespace impm
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
     , grid(parameters.grid, communicator, checkpoint_grid)
     , load_path(settings.time)
-    , couplings(CouplingInputs<dim>{parameters, prm, grid, settings.time})
+    , couplings(
+        CouplingInputs<dim>{parameters,
+                            prm,
+                            grid,
+                            settings.time,
+                            acceleration_from_the_start(this->force_effects)})
     , material_points(parameters.bodies,
                       grid,
                       communicator,

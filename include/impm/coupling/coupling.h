@@ -455,16 +455,14 @@ namespace impm
     const BackgroundGrid<dim> &grid;
     /** The scene's time (subsection `Time`). */
     const Parameters::Time &time;
+    /** The acceleration applied in full from the first step (an unramped
+     *  gravity): the load at load factor 0. */
+    Tensor<1, dim> acceleration_from_the_start;
 
     /** @brief Refuse an axisymmetric scene, naming @p coupling (one not
      *  yet formulated with the ring's 2 pi r). */
     void
-    refuse_axisymmetry(const std::string &coupling) const
-    {
-      if (parameters.grid.axisymmetric)
-        throw InputError(coupling + " is not yet available with "
-                                    "Grid/Axisymmetric = true.");
-    }
+    refuse_axisymmetry(const std::string &coupling) const;
   };
 
   /**
