@@ -14,7 +14,10 @@
 #    initial position) have the printed displacement and vertical stress
 #    (scaled by the scene's reference stress, 20 kPa) to the printed digits
 #    (1e-6), within single precision (2e-6 absolute here);
-#  * on two processes, the rank field holds both ranks.
+#  * on two processes, the rank field holds both ranks;
+#  * a write that fails past the size check (a directory in the way of the
+#    temporary file) stops the run with one line and HDF5's reason, not
+#    HDF5's error stack (the end of this script).
 # Usage: point_files_hdf5.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -73,4 +76,23 @@ for problem in problems:
 print("%d files, %d points each, checked" % (len(files), n_points))
 sys.exit(1 if problems else 0)
 PY
-echo "point_files_hdf5: the HDF5 series matches the run"
+# A write that fails past the size check: a directory of the user's (with a
+# file in it) in the way of step 2's temporary file, written into with
+# --overwrite (which keeps what IMPM did not write). The run must stop with
+# a non-zero exit and IMPM's one line naming the file and HDF5's reason,
+# without HDF5's own error stack; the files of steps 0 and 1 stay whole.
+mkdir -p blocked/points_00002.h5.tmp && : > blocked/points_00002.h5.tmp/a_file
+"${launcher[@]}" "$impm" "$scene" --set "Output/Format=hdf5" --overwrite \
+  --set "Output/Interval=1" --set "Output directory=blocked" > blocked.txt 2>&1 &&
+  { cp blocked.txt log.txt; fail "the blocked HDF5 write did not stop the run"; }
+[ "$(grep -c '^Error: ' blocked.txt)" = 1 ] &&
+  grep -q "^Error: Writing the file blocked/points_00002.h5 failed (HDF5: H5Fcreate(): unable to create file; .*)\.$" blocked.txt ||
+  { cp blocked.txt log.txt; fail "the blocked HDF5 write was not reported in IMPM's one line"; }
+grep -q "HDF5-DIAG\|#000:" blocked.txt && { cp blocked.txt log.txt; fail "HDF5 printed its error stack"; }
+/usr/bin/python3 -c "
+import h5py
+for k in (0, 1):
+    with h5py.File('blocked/points_%05d.h5' % k, 'r') as f:
+        assert f['nodes'].shape[0] > 0
+" || fail "the files written before the failed write do not read"
+echo "point_files_hdf5: the HDF5 series matches the run; a failed write is one line"

@@ -9,6 +9,10 @@
 #include <boost/archive/text_oarchive.hpp>
 #include <boost/serialization/vector.hpp>
 
+#ifdef DEAL_II_WITH_HDF5
+#  include <hdf5.h>
+#endif
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -17,6 +21,44 @@
 
 namespace impm
 {
+  namespace
+  {
+#ifdef DEAL_II_WITH_HDF5
+    /** One entry of HDF5's error stack: "function(): description". */
+    herr_t
+    collect_hdf5_error(unsigned int, const H5E_error2_t *error, void *data)
+    {
+      std::string entry = std::string(error->func_name) +
+                          "(): " + (error->desc != nullptr ? error->desc : "");
+      std::replace(entry.begin(), entry.end(), '\n', ' ');
+      static_cast<std::vector<std::string> *>(data)->push_back(entry);
+      return 0;
+    }
+#endif
+
+    /**
+     * @brief Why the last HDF5 call failed, in one line: the call the
+     * library was asked for and the innermost cause (its error stack, whose
+     * printing IMPM turns off); empty if the stack is empty. Clears it.
+     */
+    std::string
+    hdf5_failure()
+    {
+      std::vector<std::string> entries;
+#ifdef DEAL_II_WITH_HDF5
+      H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, collect_hdf5_error, &entries);
+      H5Eclear2(H5E_DEFAULT);
+#endif
+      if (entries.empty())
+        return "";
+      if (entries.size() == 1)
+        return "HDF5: " + entries.front();
+      return "HDF5: " + entries.front() + "; " + entries.back();
+    }
+  } // namespace
+
+
+
   template <int dim>
   PointOutput<dim>::PointOutput(const std::string                &directory,
                                 const std::string                &base_name,
@@ -26,7 +68,14 @@ namespace impm
     , base_name(base_name)
     , format(format)
     , communicator(communicator)
-  {}
+  {
+#ifdef DEAL_II_WITH_HDF5
+    // HDF5 prints its error stack to stderr by default; a failed write is
+    // reported in one line (hdf5_failure()).
+    if (format == Parameters::PointFileFormat::hdf5)
+      H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+#endif
+  }
 
 
 
@@ -115,8 +164,12 @@ namespace impm
         // Collective: every process took part in the failed write.
         if (Utilities::MPI::this_mpi_process(communicator) == 0)
           std::remove(temporary.c_str());
-        throw CollectiveError("Writing the file " + directory + "/" + file +
-                              " failed (" + one_line_message(exception) + ").");
+        // HDF5's own reason; deal.II's (a generic input/output error) if
+        // the stack is empty.
+        const std::string hdf5 = hdf5_failure();
+        throw CollectiveError(
+          "Writing the file " + directory + "/" + file + " failed (" +
+          (hdf5.empty() ? one_line_message(exception) : hdf5) + ").");
       }
     // The entry names the file as the series will find it.
     xdmf_entries.push_back(
