@@ -12,7 +12,8 @@
 #     linear in lambda);
 #  2. without the release (the imbalance applied in step 1) and
 #  3. released in one step: the same final displacements as 1 (the release
-#     leaves nothing at lambda = 1).
+#     leaves nothing at lambda = 1);
+#  4. stopped after step 2 and resumed: steps.csv as an uninterrupted run's.
 # Usage: initial_stress_release.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -27,6 +28,17 @@ run() {
 run released --set "Testing/Enabled=true"
 run at_once --set "Testing/Enabled=true" --set "Initial stress release/Enabled=false"
 run one_step --set "Testing/Enabled=true" --set "Solver/Load steps=1"
+# 4. stopped after step 2 and resumed: the same steps.csv as 1 (the points
+#    carry their initial stresses through the checkpoint).
+"${launcher[@]}" "$impm" "$scene" --set "Output directory=resumed" --set "Checkpoint/Interval=1" \
+  --stop-after-step 2 > stopped.txt 2>&1 || { cp stopped.txt log.txt; fail "the run to resume failed"; }
+"${launcher[@]}" "$impm" "$scene" --set "Output directory=resumed" --set "Checkpoint/Interval=1" \
+  --resume > resumed.txt 2>&1 || { cp resumed.txt log.txt; fail "the resumed run failed"; }
+"${launcher[@]}" "$impm" "$scene" --set "Output directory=whole" > whole.txt 2>&1 ||
+  { cp whole.txt log.txt; fail "the run to compare with failed"; }
+untimed whole/steps.csv > whole.csv
+untimed resumed/steps.csv > resumed.csv
+compare whole.csv resumed.csv "the resumed release differs from the uninterrupted one"
 /usr/bin/python3 - <<'PY' || fail "the initial stress release"
 import csv, glob
 import numpy as np
