@@ -10,14 +10,21 @@
 //   at the nominal increment nothing grows further;
 //   after a cut an easy step (3 iterations) doubles at once;
 //   with 'Steady steps before growth' = 0 steps of 6 iterations never grow
-//   the increment back.
+//   the increment back;
+//   a failed solve whose last 5 residuals are flat below 1e-3 (a floor,
+//   the axisymmetric plate's 1.5e-9) suggests 'Solver/Absolute
+//   tolerance' in its message; one that cycles (0.063 and 0.11, a
+//   contact's stick and slip) or still falls does not.
 
+#include <impm/base/errors.h>
 #include <impm/solver/load_step_control.h>
 #include <impm/solver/newton_solver.h>
 #include <impm/solver/solver_parameters.h>
 
 #include <iomanip>
 #include <iostream>
+#include <string>
+#include <vector>
 
 using namespace impm;
 
@@ -80,5 +87,35 @@ main()
     attempt(control, false, 20);
     for (unsigned int i = 0; i < 6; ++i)
       attempt(control, true, 6);
+  }
+  {
+    std::cout << "Stalled residuals" << std::endl;
+    const std::vector<std::vector<double>> cases = {
+      {0.7, 0.03, 1e-6, 1.58e-9, 1.55e-9, 1.56e-9, 1.57e-9, 1.55e-9},
+      {0.97, 0.066, 0.11, 0.063, 0.112, 0.063, 0.112, 0.063},
+      {0.7, 0.03, 1e-6, 1e-7, 5e-8, 2e-8, 1e-8, 5e-9},
+      {0.7, 1.55e-9, 1.56e-9, 1.57e-9}};
+    for (const auto &residuals : cases)
+      std::cout << (LoadStepControl::stalled(residuals) ? "stalled" :
+                                                          "not stalled")
+                << std::endl;
+    Parameters::Solver parameters = make_parameters(3);
+    parameters.step_control       = false;
+    LoadStepControl control(parameters);
+    NewtonRecord    record;
+    record.outcome                  = NewtonOutcome::iteration_limit;
+    record.residuals                = cases[0];
+    record.last_norm                = 3.6e-5;
+    record.last_internal_force_norm = 1e4;
+    try
+      {
+        control.update(record);
+      }
+    catch (const LoadStepFailure &failure)
+      {
+        const std::string text = failure.what();
+        std::cout << text.substr(0, text.find(" Relative residuals"))
+                  << std::endl;
+      }
   }
 }

@@ -36,6 +36,21 @@ namespace impm
 
 
 
+  bool
+  LoadStepControl::stalled(const std::vector<double> &residuals)
+  {
+    if (residuals.size() < stall_length + 1)
+      return false;
+    const auto   first = residuals.end() - stall_length;
+    const double low   = *std::min_element(first, residuals.end());
+    const double high  = *std::max_element(first, residuals.end());
+    // Near convergence and flat: a floor, not a cycle between states (a
+    // contact's stick and slip alternate between residuals apart by more).
+    return high < 1e-3 && high < 1.25 * low;
+  }
+
+
+
   void
   LoadStepControl::update(const NewtonRecord &record)
   {
@@ -91,6 +106,16 @@ namespace impm
               << " N) is at the round-off level of the internal forces ("
               << record.last_internal_force_norm
               << " N): set 'Solver/Absolute tolerance' above it.";
+    else if (record.outcome == NewtonOutcome::iteration_limit &&
+             stalled(record.residuals))
+      message << " Its residual stalled at " << record.last_norm
+              << " N (relative " << record.residuals.back()
+              << ") over its last " << stall_length
+              << " iterations, a floor of round-off that iterating does not "
+                 "lower: if "
+              << record.last_norm
+              << " N is negligible against the scene's forces, set "
+                 "'Solver/Absolute tolerance' above it.";
     if (!parameters.step_control)
       throw LoadStepFailure(message.str() +
                               " Relative residuals:" + failures.str(),

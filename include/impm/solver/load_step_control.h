@@ -81,6 +81,18 @@ namespace impm
     void
     load(const RunState &state);
 
+    /** The iterations over which a stalled residual is judged. */
+    static constexpr unsigned int stall_length = 5;
+
+    /**
+     * @brief Whether the last stall_length relative @p residuals of a
+     * Newton solve lie within 25 % of each other below 1e-3: a floor the
+     * iterations do not lower (the failure's message then suggests
+     * 'Solver/Absolute tolerance'), not a cycle between states.
+     */
+    static bool
+    stalled(const std::vector<double> &residuals);
+
   private:
     const Parameters::Solver &parameters;
     const double              nominal_step;
