@@ -5,6 +5,7 @@
 #include <impm/base/errors.h>
 #include <impm/base/names.h>
 #include <impm/coupling/coupling.h>
+#include <impm/coupling/fixed_nodal_load.h>
 
 #include <algorithm>
 #include <cmath>
@@ -193,8 +194,8 @@ namespace impm
                     const LoadStepSystem<dim> &system,
                     const StepSpan            &span) override
       {
-        acceleration = scale * history.value(span.end_time);
-        grid.reinit_vector(load);
+        acceleration      = scale * history.value(span.end_time);
+        NodalVector &load = nodal_load.reset(grid);
         for (const auto &point : material_points.particles())
           {
             const PointStep<dim> &step = system.point_steps.of(point);
@@ -204,23 +205,7 @@ namespace impm
                 load.local_element(step.dofs[v * dim + i]) -=
                   step.support.weights[v] * m * acceleration[i];
           }
-        load.compress(VectorOperation::add);
-        Tensor<1, dim> local_total;
-        double         norm_squared = 0.;
-        for (unsigned int i = 0; i < load.locally_owned_size(); ++i)
-          if (system.system_index(i) != numbers::invalid_dof_index)
-            {
-              local_total[grid.component(i)] += load.local_element(i);
-              norm_squared += load.local_element(i) * load.local_element(i);
-            }
-        const MPI_Comm communicator =
-          grid.get_triangulation().get_communicator();
-        for (unsigned int d = 0; d < dim; ++d)
-          total[d] = Utilities::MPI::sum(local_total[d], communicator);
-        load_norm = std::sqrt(Utilities::MPI::sum(norm_squared, communicator));
-        in_system.resize(load.locally_owned_size());
-        for (unsigned int i = 0; i < load.locally_owned_size(); ++i)
-          in_system[i] = system.system_index(i) != numbers::invalid_dof_index;
+        nodal_load.finish(system, grid);
       }
 
       /** @brief Minus the load, at the owned DoFs of the system (the
@@ -230,16 +215,14 @@ namespace impm
                  const NodalVector &,
                  NodalVector &internal_force) override
       {
-        for (unsigned int i = 0; i < load.locally_owned_size(); ++i)
-          if (in_system[i])
-            internal_force.local_element(i) -= load.local_element(i);
+        nodal_load.subtract_from(internal_force);
       }
 
       /** @brief The size of the load. */
       double
       reference_force() const override
       {
-        return load_norm;
+        return nodal_load.norm();
       }
 
       /** @brief Minus the load (it enters the balance through the internal
@@ -247,7 +230,7 @@ namespace impm
       Tensor<1, dim>
       force_from_material() const override
       {
-        return -total;
+        return -nodal_load.sum();
       }
 
       std::vector<std::string>
@@ -290,12 +273,8 @@ namespace impm
       const BackgroundGrid<dim> &grid;
       /** The base's acceleration at the step's end. */
       Tensor<1, dim> acceleration;
-      /** The nodal load -M a_g of the step, and its sum and size. */
-      NodalVector    load;
-      Tensor<1, dim> total;
-      double         load_norm = 0.;
-      /** Whether each owned DoF is in the system. */
-      std::vector<bool> in_system;
+      /** The nodal load -M a_g of the step. */
+      FixedNodalLoad<dim> nodal_load;
     };
   } // namespace
 

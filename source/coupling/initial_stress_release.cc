@@ -2,16 +2,13 @@
 // starts from a stress its loads do not balance (a geostatic stress beside
 // a free face) begins in equilibrium and reaches its true one at the full
 // load, as an excavation is modelled in stages.
-#include <deal.II/base/mpi.h>
-
 #include <impm/base/errors.h>
 #include <impm/coupling/coupling.h>
+#include <impm/coupling/fixed_nodal_load.h>
 #include <impm/mechanics/equilibrium_forms.h>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -127,7 +124,7 @@ namespace impm
         const bool         axisymmetric = system.axisymmetric();
         const unsigned int first =
           material_points.layout().coupling_field("initial_stress");
-        grid.reinit_vector(release);
+        NodalVector &release = released.reset(grid);
         std::array<double, PointSupport<dim>::max_nodes * dim> forces;
         for (const auto &point : material_points.particles())
           {
@@ -161,26 +158,7 @@ namespace impm
             for (unsigned int k = 0; k < n; ++k)
               release.local_element(step.dofs[k]) += forces[k];
           }
-        release.compress(VectorOperation::add);
-        double         norm_squared = 0.;
-        Tensor<1, dim> local_total;
-        in_system.resize(release.locally_owned_size());
-        for (unsigned int i = 0; i < release.locally_owned_size(); ++i)
-          {
-            in_system[i] = system.system_index(i) != numbers::invalid_dof_index;
-            if (in_system[i])
-              {
-                local_total[grid.component(i)] += release.local_element(i);
-                norm_squared +=
-                  release.local_element(i) * release.local_element(i);
-              }
-          }
-        const MPI_Comm communicator =
-          grid.get_triangulation().get_communicator();
-        release_norm =
-          std::sqrt(Utilities::MPI::sum(norm_squared, communicator));
-        for (unsigned int d = 0; d < dim; ++d)
-          total[d] = Utilities::MPI::sum(local_total[d], communicator);
+        released.finish(system, grid);
       }
 
       /** @brief Minus the released force at the owned DoFs of the system
@@ -192,16 +170,14 @@ namespace impm
                  const NodalVector &,
                  NodalVector &internal_force) override
       {
-        for (unsigned int i = 0; i < release.locally_owned_size(); ++i)
-          if (in_system[i])
-            internal_force.local_element(i) -= release.local_element(i);
+        released.subtract_from(internal_force);
       }
 
       /** @brief The size of the released force still applied. */
       double
       reference_force() const override
       {
-        return release_norm;
+        return released.norm();
       }
 
       /** @brief Minus the released force's sum over the system's DoFs (it
@@ -209,7 +185,7 @@ namespace impm
       Tensor<1, dim>
       force_from_material() const override
       {
-        return -total;
+        return -released.sum();
       }
 
     private:
@@ -217,12 +193,7 @@ namespace impm
       /** The acceleration of the load at load factor 0. */
       const Tensor<1, dim> acceleration;
       /** The step's released force, (1 - lambda) r0. */
-      NodalVector release;
-      /** Its norm over the system's DoFs, and its sum. */
-      double         release_norm = 0.;
-      Tensor<1, dim> total;
-      /** Whether each owned DoF is in the system. */
-      std::vector<bool> in_system;
+      FixedNodalLoad<dim> released;
     };
   } // namespace
 
