@@ -12,7 +12,8 @@
 #      then build/impm-formulation-kernels, the per-point cost of each form
 #   4. collapse: h = 1, 0.5, 0.25 m x {3x3, 6x6}, point files of the initial
 #      and final state (kept in $STUDY_WORK, default build/study/)
-#   5. doc/scripts/plot_study.py (figures, tables into doc/benchmarks/README.md)
+#   5. doc/scripts/plot_study.py (figures; tables into doc/benchmarks/accuracy_cost.md,
+#      the machine into doc/benchmarks/README.md)
 #   6. scripts/render_collapse.py (ParaView under xvfb-run, else matplotlib)
 #
 # Runs impm one job at a time.  Needs /usr/bin/python3 with numpy,
@@ -111,7 +112,8 @@ echo "load avg:   $(cut -d' ' -f1-3 /proc/loadavg) after the runs" >> "$out/mach
 
 stage "figures and tables"
 $py "$root/doc/scripts/plot_study.py" --data "$out" \
-  --formulation-runs "$work/formulation" --readme "$out/README.md" > "$work/tables.md" || status=1
+  --formulation-runs "$work/formulation" --page "$out/accuracy_cost.md" \
+  --page "$out/README.md" > "$work/tables.md" || status=1
 echo "tables: $work/tables.md"
 
 stage "collapse renders"

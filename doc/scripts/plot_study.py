@@ -3,7 +3,8 @@
 
 Usage:
   doc/scripts/plot_study.py [--data doc/benchmarks] [--formulation-runs DIR]
-                            [--readme doc/benchmarks/README.md]
+                            [--page doc/benchmarks/accuracy_cost.md]
+                            [--page doc/benchmarks/README.md]
 
 Reads the CSV files that scripts/run_study.sh writes with scripts/study.py
 into the data directory:
@@ -21,10 +22,14 @@ and writes into the same directory
   time_per_phase.png           (c) time of each phase against the number of points
   column_stress_h3.125.png     (d) vertical stress against initial height Z
   formulation_check.csv        the equality check of the two formulations
-and, with --readme, replaces the blocks between
+and, with --page (repeatable; --readme is the same option), replaces the
+blocks between
   <!-- BEGIN NAME --> and <!-- END NAME -->
-of that Markdown file by the tables (NAME = column-table, formulation-table,
-collapse-table, formulation-kernels, machine).  --formulation-runs names the directory where
+of each Markdown file named by the tables (NAME = column-table,
+column-phases, formulation-table, formulation-kernels, collapse-table,
+collapse-phases: accuracy_cost.md; machine: README.md).  A block is written
+into every page that has its markers; a block that no page has is reported.
+--formulation-runs names the directory where
 study.py --keep put the two Testing runs of the formulation comparison; their
 steps.csv (error_sigma_zz of every step, 10 significant digits) are compared
 too.
@@ -429,11 +434,11 @@ def phases_table(rows, scene):
 
 
 def replace_block(text, name, content):
+    """The text with the block NAME replaced, and whether it had one."""
     pattern = re.compile(r"(<!-- BEGIN %s -->\n).*?(<!-- END %s -->)" % (name, name), re.S)
     if not pattern.search(text):
-        print(f"plot_study.py: no block {name} in the README; skipped", file=sys.stderr)
-        return text
-    return pattern.sub(lambda m: m.group(1) + content.rstrip() + "\n" + m.group(2), text)
+        return text, False
+    return pattern.sub(lambda m: m.group(1) + content.rstrip() + "\n" + m.group(2), text), True
 
 
 def main():
@@ -441,7 +446,9 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--data", default=os.path.join(ROOT, "doc", "benchmarks"))
     parser.add_argument("--formulation-runs")
-    parser.add_argument("--readme")
+    parser.add_argument("--page", "--readme", dest="pages", action="append", default=[],
+                        help="a Markdown page whose BEGIN/END blocks get the tables "
+                             "(repeatable)")
     args = parser.parse_args()
     d = args.data
 
@@ -476,21 +483,40 @@ def main():
         blocks["collapse-phases"] = phases_table(collapse, "collapse")
     kernels = os.path.join(d, "formulation_kernels.md")
     if os.path.exists(kernels):
-        # The table of build/impm-formulation-kernels, as it printed it.
-        blocks["formulation-kernels"] = "\n".join(
-            line.rstrip() for line in open(kernels) if line.startswith("|"))
+        # The first table of build/impm-formulation-kernels, as it printed it
+        # (the second, the point stiffness kernel, stays in formulation_kernels.md).
+        table = []
+        for line in open(kernels):
+            if line.startswith("|"):
+                table.append(line.rstrip())
+            elif table:
+                break
+        blocks["formulation-kernels"] = "\n".join(table)
     machine = os.path.join(d, "machine.txt")
     if os.path.exists(machine):
         blocks["machine"] = "```\n" + open(machine).read().rstrip() + "\n```"
     for name, content in blocks.items():
         print(f"--- {name} ---\n{content}\n")
-    if args.readme and os.path.exists(args.readme):
-        text = open(args.readme).read()
+    written = set()
+    for page in args.pages:
+        if not os.path.exists(page):
+            print(f"plot_study.py: no page {page}; skipped", file=sys.stderr)
+            continue
+        text = open(page).read()
+        found = []
         for name, content in blocks.items():
-            text = replace_block(text, name, content)
-        with open(args.readme, "w") as f:
+            text, had = replace_block(text, name, content)
+            if had:
+                found.append(name)
+        with open(page, "w") as f:
             f.write(text)
-        print(f"plot_study.py: updated {args.readme}", file=sys.stderr)
+        written.update(found)
+        print(f"plot_study.py: updated {page} ({', '.join(found) or 'no blocks'})",
+              file=sys.stderr)
+    if args.pages:
+        for name in blocks:
+            if name not in written:
+                print(f"plot_study.py: no block {name} in the pages; skipped", file=sys.stderr)
     return 0
 
 
