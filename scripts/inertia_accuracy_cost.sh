@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Inertia: what accuracy costs in time (doc/benchmarks/README.md, "Inertia").
+# Inertia: what accuracy costs in time (doc/benchmarks/inertia.md).
 # Usage: scripts/inertia_accuracy_cost.sh [IMPM] [REPEATS]
 #  1. The vibrating bar (tests/vibrating_bar.prm, v0 = 0.01 m/s, two
 #     periods): the implicit trapezoidal rule at 25, 50, 100 and 200 steps a

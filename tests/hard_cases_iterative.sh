@@ -23,8 +23,8 @@
 # double the next step takes one more with GMRES, so the steps differ
 # (contact_tangent_disc cuts one step fewer), and the final contact forces
 # are 0.1-3 % apart, the largest vertical stress up to 6.4 %
-# (doc/benchmarks/README.md, "Every hard case with the iterative
-# solver"). For them the test prints the differences and checks that with
+# (doc/benchmarks/parallel_and_solvers.md, "Every hard case with the
+# iterative solver"). For them the test prints the differences and checks that with
 # the step growth off ('Easy step iterations' 1: both solvers take the
 # same load steps) GMRES reaches KLU's answers.
 #

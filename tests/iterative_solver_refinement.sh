@@ -19,7 +19,8 @@
 #  * plastic: from each grid to the next finer one they grow by at most 2.
 # From h = 1 to 0.125 m the plastic counts grow by more than 2 (2.3 in the
 # mean, 2.6 in the largest when this test was written): printed, and
-# recorded in doc/benchmarks/README.md ("Iterations under refinement").
+# recorded in doc/benchmarks/parallel_and_solvers.md ("Iterations under
+# refinement").
 # Usage: iterative_solver_refinement.sh IMPM PRM_DIRECTORY [MPIEXEC N]
 scenes=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"

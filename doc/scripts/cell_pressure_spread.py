@@ -9,7 +9,7 @@ groups the layer's points (the lowest body index) by the cell of their
 initial position and prints, for the four rows of cells below the footing
 (y from 1.5 to 2 m) and the first ten columns (x from 0 to 1.25 m), the
 lowest and highest -(sigma_xx + sigma_yy) / 2 in kPa, then the largest
-spread within a cell (doc/benchmarks/README.md, "Cell pressures").
+spread within a cell (doc/benchmarks/soils.md, "Cell pressures").
 """
 import os
 import sys

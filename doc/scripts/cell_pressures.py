@@ -11,7 +11,8 @@ CELL_SIZE from the origin) and prints, for the ROWS highest rows of cells
 (default 4) and the first COLUMNS columns (default 8), the mean of
 p = -(sigma_xx + sigma_yy + sigma_zz) / 3 in kPa. A pressure that
 alternates from cell to cell along a row is the checkerboard mode of
-constant-per-cell volume averaging (doc/benchmarks/README.md, "F-bar").
+constant-per-cell volume averaging (doc/benchmarks/notes.md, "The
+Mohr-Coulomb footing with plain F-bar").
 With --volume (and the field volume written), prints instead the mean
 volume change J - 1 of the points in each cell, in per mille, J being a
 point's volume over INITIAL_POINT_VOLUME (the same for every point of a

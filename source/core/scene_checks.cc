@@ -290,7 +290,7 @@ namespace impm
       {
         // Peak resident memory measured on this project's runs (Release):
         // per cell of the grid about 0.9 kB in 2D and 1.7 kB in 3D (almost
-        // empty grids, doc/benchmarks/README.md, "Reliability"), per material
+        // empty grids, doc/benchmarks/reliability.md), per material
         // point 2.7 kB in 2D (the 10^6-point collapse, doc/benchmarks/
         // scaling.md); per 3D point 5.0 kB at 884,736 points and 7.5 kB
         // at 110,592 (the 3D benchmark on two processes, less the grid and

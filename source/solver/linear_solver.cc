@@ -271,7 +271,7 @@ namespace impm
         // equations" = 1): a face condition removes one component of a
         // node from the system, so its rows do not come in blocks of dim.
         // On the collapse at h = 0.25 m the rotations cut the GMRES
-        // iterations by 30 % (doc/benchmarks/README.md).
+        // iterations by 30 % (doc/benchmarks/parallel_and_solvers.md).
         Teuchos::ParameterList              ml_parameters;
         std::unique_ptr<Epetra_MultiVector> unused_modes;
         amg_data.set_parameters(ml_parameters, unused_modes, matrix);
@@ -381,8 +381,8 @@ namespace impm
      * size at 500 this is faster than KLU from there on in 2D and 3D: a
      * 3D system of 1,252 DoFs takes 7.6 ms per GMRES solve against 55 ms
      * per KLU solve, the Mohr-Coulomb footing's 2D system of 1,362 DoFs
-     * 2.7 s against 3.3 s per run (doc/benchmarks/README.md, "The
-     * automatic choice").
+     * 2.7 s against 3.3 s per run (doc/benchmarks/parallel_and_solvers.md,
+     * "The automatic choice").
      */
     class AutomaticSolver : public GmresAmgSolver
     {
@@ -412,7 +412,8 @@ namespace impm
        * a failure on all). Without ghost stabilisation the collapse at
        * h = 0.5 m has nearly singular systems on which GMRES runs out of
        * iterations near the solution: two step cuts, 270 Newton iterations
-       * against KLU's 196 without (doc/benchmarks/README.md).
+       * against KLU's 196 without (doc/benchmarks/parallel_and_solvers.md,
+       * "The rescue").
        */
       void
       try_solve(const LinearSolveRequest &request,

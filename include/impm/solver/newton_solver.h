@@ -208,13 +208,14 @@ namespace impm
      * (default 1e-2) is tighter than theirs: with 0.1, the Mohr-Coulomb
      * footing at h = 0.0625 m wandered for whole load steps where points
      * change return region (11,025 Newton iterations and 1,363 load steps
-     * against 467 and 50; doc/benchmarks/README.md, "The forcing term's
-     * cap").
+     * against 467 and 50; doc/benchmarks/parallel_and_solvers.md, "The
+     * forcing term's cap").
      * After an iterate in which a contact changed its state (@p
      * contact_changed), 'Solver/Linear tolerance' itself: an inexact
      * correction across a contact's kink let Newton cycle between contact
      * states on a stiff penalty (the plate at h = 1/32 m with penalty
-     * factor 1000; doc/benchmarks/README.md, "Rigid contact").
+     * factor 1000; doc/benchmarks/contact.md, "Contact with the iterative
+     * solver").
      */
     double
     linear_tolerance(const double residual,
