@@ -19,7 +19,9 @@
 #   -0.371680 S to 1e-4;
 # * a rigid body moved sideways out of the grid: one line "Error: Load step
 #   1 ...: Rigid body 1 leaves the grid" and a non-zero status, no step
-#   line.
+#   line;
+# * a small punch moved into the block without the limit: refused by the
+#   tunnelling check (material points left inside it).
 # Usage: rigid_motion_limit.sh IMPM contact_plate_compression.prm [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -61,6 +63,23 @@ assert abs(force / 3.362624 - 1) < 1e-4, force
 assert abs(stress / -0.371680 - 1) < 1e-4, stress
 " || fail "the plate from above ends at force $force S L, stress $stress S"
 
+# A small punch (0.2 x 0.15 m, 0.3 m above the block) moved 0.75 m down in
+# one step without the motion limit: no face of the block is near it at
+# the start of the step, so no contact probe sees it; the attempts whose
+# Newton solve converges leave material points inside it and are refused
+# by the tunnelling check (deeper than 1/alpha = 0.01 cells), the cut steps
+# crush the block under the punch and the run stops with an error.
+rm -rf results
+plate -e 's/Lower corner = -0.25, 1$/Lower corner = 0.4, 1.3/' \
+      -e 's/Upper corner = 1.75, 1.25/Upper corner = 0.6, 1.45/' \
+      -e 's/Displacement = 0, -0.25/Displacement = 0, -0.75/' > punch.prm
+run punch.prm --set "Rigid contact/Maximum motion per step=0" > log.txt 2>&1 &&
+  fail "the punch through the block ended with status 0"
+grep -qE "step refused: the domain of the material point at \([0-9. ]*\) lies [0-9.]* cell sizes inside Rigid body 1 after this step, deeper than the contact lets a face in \(0.01\): the body passed into the material \(tunnelling\)" log.txt ||
+  fail "no attempt was refused by the tunnelling check"
+[ "$(grep -c "^Error" log.txt)" -eq 1 ] || fail "not one error line"
+grep -qE "Stacktrace|An error occurred|MPI_ABORT" log.txt && fail "a raw report"
+
 # A body moved sideways out of the grid.
 rm -rf results
 plate -e 's/Lower corner = -0.25, 1$/Lower corner = 1.1, 1.1/' \
@@ -73,4 +92,4 @@ grep -q "^Error: Load step 1 (from load factor 0 to 0.5): Rigid body 1 leaves th
 [ "$(grep -c "^Error" log.txt)" -eq 1 ] || fail "more than one error line"
 grep -q "^step" log.txt && fail "a step line before the error"
 grep -qE "Stacktrace|An error occurred|MPI_ABORT" log.txt && fail "a raw report"
-echo "rigid_motion_limit: the plate through the block stopped, the plate from above converged in cut steps, the body out of the grid refused"
+echo "rigid_motion_limit: the plate through the block stopped, the plate from above converged in cut steps, the punch passed into the block refused by the tunnelling check, the body out of the grid refused"

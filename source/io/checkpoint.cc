@@ -147,7 +147,8 @@ namespace impm
   void
   Checkpoint::write(const std::function<void(const std::string &)> &save_grid,
                     const RunState                                 &state,
-                    const std::string &scene_text) const
+                    const std::string                              &scene_text,
+                    const std::uintmax_t estimated_size) const
   {
     const bool root =
       dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
@@ -155,9 +156,12 @@ namespace impm
     run_collectively(communicator, [&]() {
       if (root)
         {
-          // The space for a checkpoint about as large as the last one.
-          const auto [bytes, largest] =
+          // The space for a checkpoint about as large as the last one, or
+          // the estimate (the first).
+          auto [bytes, largest] =
             directory_size((base / complete_name).string());
+          bytes                      = std::max(bytes, estimated_size);
+          largest                    = std::max(largest, estimated_size);
           const std::string shortage = space_shortage(output_directory,
                                                       bytes + bytes / 10,
                                                       largest + largest / 10,
@@ -169,39 +173,72 @@ namespace impm
         }
     });
     // deal.II's save is collective and reports its own failures, but not a
-    // write cut short at the file-size limit.
-    save_grid((base / partial_name / grid_name).string());
+    // write cut short at the file-size limit. Whatever fails, no partial
+    // checkpoint is left.
+    const auto remove_partial = [&]() {
+      if (root)
+        {
+          std::error_code ignored;
+          fs::remove_all(base / partial_name, ignored);
+        }
+    };
+    try
+      {
+        save_grid((base / partial_name / grid_name).string());
+      }
+    catch (...)
+      {
+        remove_partial();
+        throw;
+      }
     run_collectively(communicator, [&]() {
       if (!root)
         return;
-      for (const auto &entry : fs::directory_iterator(base / partial_name))
-        if (reached_file_size_limit(entry.path().string()))
-          {
-            const std::string name = entry.path().string();
-            fs::remove_all(base / partial_name);
-            throw std::runtime_error(
-              "Writing the checkpoint file " + name +
-              " failed (File too large: it reached the file-size limit)" +
-              kept_or_none(base) + ".");
-          }
-      // Plain writes: the directory is not published yet, and the manifest
-      // syncs every file it names.
-      write_checked((base / partial_name / state_name).string(),
-                    state.to_text());
-      write_checked((base / partial_name / SceneRecord::file_name).string(),
-                    scene_text);
-      // The manifest last: its presence marks the checkpoint complete.
-      CheckpointManifest::write((base / partial_name).string());
-      // The previous checkpoint is kept as checkpoint.old: a resume falls
-      // back to it if the newest is found damaged.
-      if (fs::exists(base / complete_name))
+      try
         {
-          fs::remove_all(base / previous_name);
-          fs::rename(base / complete_name, base / previous_name);
+          publish(base, state, scene_text);
         }
-      fs::rename(base / partial_name, base / complete_name);
-      sync_file(base.string(), true);
+      catch (...)
+        {
+          remove_partial();
+          throw;
+        }
     });
+  }
+
+
+
+  void
+  Checkpoint::publish(const std::filesystem::path &base,
+                      const RunState              &state,
+                      const std::string           &scene_text) const
+  {
+    for (const auto &entry : fs::directory_iterator(base / partial_name))
+      if (reached_file_size_limit(entry.path().string()))
+        {
+          const std::string name = entry.path().string();
+          fs::remove_all(base / partial_name);
+          throw std::runtime_error(
+            "Writing the checkpoint file " + name +
+            " failed (File too large: it reached the file-size limit)" +
+            kept_or_none(base) + ".");
+        }
+    // Plain writes: the directory is not published yet, and the manifest
+    // syncs every file it names.
+    write_checked((base / partial_name / state_name).string(), state.to_text());
+    write_checked((base / partial_name / SceneRecord::file_name).string(),
+                  scene_text);
+    // The manifest last: its presence marks the checkpoint complete.
+    CheckpointManifest::write((base / partial_name).string());
+    // The previous checkpoint is kept as checkpoint.old: a resume falls
+    // back to it if the newest is found damaged.
+    if (fs::exists(base / complete_name))
+      {
+        fs::remove_all(base / previous_name);
+        fs::rename(base / complete_name, base / previous_name);
+      }
+    fs::rename(base / partial_name, base / complete_name);
+    sync_file(base.string(), true);
   }
 
 

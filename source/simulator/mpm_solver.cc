@@ -402,9 +402,31 @@ namespace impm
                     [this]() { material_points.prepare_for_checkpoint(); });
         },
         state,
-        scene_text);
+        scene_text,
+        estimated_checkpoint_size());
     checkpointed_step = step_number;
     pcout << "  checkpoint after load step " << step_number << std::endl;
+  }
+
+
+
+  template <int dim>
+  std::uintmax_t
+  MPMSolver<dim>::estimated_checkpoint_size() const
+  {
+    // The points' serialized data, and per cell p4est's quadrant and the
+    // sizes deal.II records of the data attached to it (about 40 bytes;
+    // 64 taken), and the headers, the state and the scene.
+    const auto    &particles = material_points.particles();
+    std::uintmax_t local     = 0;
+    if (particles.n_locally_owned_particles() > 0)
+      local =
+        static_cast<std::uintmax_t>(particles.n_locally_owned_particles()) *
+        particles.begin()->serialized_size_in_bytes();
+    return Utilities::MPI::sum(local, communicator) +
+           64 * static_cast<std::uintmax_t>(
+                  grid.get_triangulation().n_global_active_cells()) +
+           scene_text.size() + 16384;
   }
 
 

@@ -93,7 +93,7 @@ namespace impm
           "'Linear tolerance'). 0.1 let Newton wander where Mohr-Coulomb "
           "points change return region: the footing at h = 0.0625 m took "
           "11,025 Newton iterations and 446 s with 0.1, 467 and 16 s with "
-          "1e-2 (doc/benchmarks/README.md).");
+          "1e-2 (doc/benchmarks/parallel_and_solvers.md).");
         prm.declare_entry("Linear iterations",
                           "1000",
                           Patterns::Integer(1),
@@ -122,7 +122,7 @@ namespace impm
           "aggregates (deal.II's default is 1e-4). 0 keeps them all: on the "
           "3D quarter collapse at h = 0.5 m the linear solve took 0.8 of its "
           "time with 1e-4 (8 % more GMRES iterations, a cheaper hierarchy); "
-          "in 2D it is within the noise (doc/benchmarks/README.md).");
+          "in 2D it is within the noise (doc/benchmarks/parallel_and_solvers.md).");
         prm.declare_entry(
           "AMG coarse size",
           "500",
@@ -133,7 +133,7 @@ namespace impm
           "for every solve, and 'automatic' solves it with KLU. 500: a 3D "
           "system of 1,252 DoFs took 7.6 ms per solve against 58 ms with "
           "2000 (and 55 ms with KLU); above 2,000 rows the value changes little "
-          "(doc/benchmarks/README.md). tests/iterative_solver_refinement "
+          "(doc/benchmarks/parallel_and_solvers.md). tests/iterative_solver_refinement "
           "sets 50 so that every grid from h = 1 m on gets a multilevel "
           "hierarchy.");
         prm.declare_entry(
@@ -145,7 +145,7 @@ namespace impm
           "how often); a larger one fails, and the load step is cut. 0: "
           "never. Without ghost stabilisation the collapse at h = 0.5 m "
           "cut two steps after GMRES ran out of iterations on its nearly "
-          "singular systems (doc/benchmarks/README.md).");
+          "singular systems (doc/benchmarks/parallel_and_solvers.md).");
       }
 
       /** The load-step control and the condition estimate. */

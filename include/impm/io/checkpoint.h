@@ -7,6 +7,8 @@
 
 #include <mpi.h>
 
+#include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -62,12 +64,22 @@ namespace impm
      * and the points under the file name it is given, on every process;
      * rank 0 writes @p state, the scene @p scene_text (from
      * SceneRecord::to_text()) and the manifest, and puts the checkpoint in
-     * place.
+     * place. Before anything is written, the free space is checked against
+     * the larger of @p estimated_size and the last checkpoint's size, with
+     * a tenth more: a full disk met inside the grid's save (p4est's MPI-IO)
+     * aborts instead of reporting. A failure leaves no partial directory.
+     *
+     * @param save_grid Saves the grid and the points (collective).
+     * @param state The run's state, written as `state.txt`.
+     * @param scene_text The scene, written as `scene.prm`.
+     * @param estimated_size The checkpoint's expected size in bytes on all
+     *   processes together (the points' serialized data and the cells').
      */
     void
     write(const std::function<void(const std::string &)> &save_grid,
           const RunState                                 &state,
-          const std::string                              &scene_text) const;
+          const std::string                              &scene_text,
+          const std::uintmax_t                            estimated_size) const;
 
     /**
      * @brief Choose the checkpoint to resume from (collective; to be
@@ -94,6 +106,15 @@ namespace impm
     read_scene() const;
 
   private:
+    /** Rank 0: after the grid's save into `checkpoint.tmp/` under @p base,
+     *  check its files against the file-size limit, write the state, the
+     *  scene and the manifest, and publish it as `checkpoint/` (the last
+     *  one kept as `checkpoint.old/`). */
+    void
+    publish(const std::filesystem::path &base,
+            const RunState              &state,
+            const std::string           &scene_text) const;
+
     const std::string output_directory;
     const MPI_Comm    communicator;
     /** The directory of the selected checkpoint ("" before select()). */

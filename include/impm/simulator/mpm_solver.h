@@ -21,6 +21,7 @@
 #include <impm/solver/newton_solver.h>
 #include <impm/system/load_step_system.h>
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -149,6 +150,11 @@ namespace impm
     write_checkpoint(const LoadStepControl &control,
                      const unsigned int     step_number,
                      const double           elapsed);
+
+    /** The bytes a checkpoint will take on all processes together, an
+     *  estimate from the points and cells (collective). */
+    std::uintmax_t
+    estimated_checkpoint_size() const;
 
     /** Whether to stop (and checkpoint) now: the wall-time limit has
      * passed on any process; the reason. */
