@@ -6,8 +6,9 @@
 # * every line of its ```sh blocks is run as the page gives it, in order,
 #   with build/impm replaced by the executable under test; a line that runs
 #   build/impm gets the shortening the page declares for that block in a
-#   "<!-- test: --set ... -->" comment just before it, and
-#   --set Testing/Enabled=true --set Output/Interval=0; such a run must
+#   "<!-- test: --set ... -->" comment just before it, after
+#   --set Testing/Enabled=true --set Output/Interval=0 (so that a page may
+#   ask for point files, e.g. to check them); such a run must
 #   complete, keep its mass (the test summary's "total mass: A (initial
 #   B)"), pass every check of the test summary (none ends in "NO" or says
 #   "NO ("), and write a summary.json;
@@ -115,13 +116,13 @@ for page in sorted(glob.glob(pages + "/*.md")):
                 if scene_run:
                     run_by_pages.add(scene_run.group(1))
                 command = " ".join([shlex.quote(impm), line[len("build/impm "):],
-                                    shortening, testing])
+                                    testing, shortening])
             start = time.time()
             run = subprocess.run(command, shell=True, stdout=subprocess.PIPE,
                                  stderr=subprocess.STDOUT, text=True)
             printout.append(run.stdout)
             shown = line if len(line) <= 100 else line[:97] + "..."
-            print("%s: $ %s%s  (%.1f s)" % (name, shown, "  " + shortening if shortening else "",
+            print("%s: $ %s%s  (%.1f s)" % (name, shown, "  " + shortening if shortening and runs_impm else "",
                                             time.time() - start))
             if run.returncode != 0:
                 fail("%s: '%s' exited with %d:\n%s" % (name, line, run.returncode,
