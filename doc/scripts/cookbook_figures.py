@@ -118,7 +118,7 @@ def section(points, dimension):
 
 
 def picture(scene, output, field, label, dimension=2, scale=1.0, cmap="viridis",
-            limits=None, symmetric=False, title=None, extent=None):
+            limits=None, symmetric=False, title=None, extent=None, outline=None):
     series = point_series(output)
     step, path = series[-1]
     points = read_grid(path)
@@ -133,7 +133,9 @@ def picture(scene, output, field, label, dimension=2, scale=1.0, cmap="viridis",
     values = values * scale
     lo = extent[0] if extent else (x[:, i].min(), x[:, j].min())
     hi = extent[1] if extent else (x[:, i].max(), x[:, j].max())
-    outlines = rigid_outlines(output, step)
+    outlines = rigid_outlines(output, step) if dimension == 2 else []
+    if outline:  # a rigid body's section, given by the scene's function
+        outlines.append(np.array(outline))
     width = 6.4
     aspect = (hi[1] - lo[1]) / max(hi[0] - lo[0], 1e-12)
     height = min(max(width * aspect, 2.2), 6.4) + 0.9
@@ -160,10 +162,8 @@ def picture(scene, output, field, label, dimension=2, scale=1.0, cmap="viridis",
     per_unit = min(bbox.width / (ax.get_xlim()[1] - ax.get_xlim()[0]),
                    bbox.height / (ax.get_ylim()[1] - ax.get_ylim()[0]))  # pixels per m
     sc.set_sizes([max((0.95 * spacing * per_unit * 72.0 / DPI) ** 2, 0.3)])
-    for outline in outlines:
-        if dimension == 3:
-            continue
-        polygon = np.vstack([outline, outline[:1]])
+    for body in outlines:
+        polygon = np.vstack([body, body[:1]])
         ax.fill(polygon[:, 0], polygon[:, 1], color="0.6", alpha=0.6, zorder=3)
         ax.plot(polygon[:, 0], polygon[:, 1], color="k", lw=1, zorder=4)
     ax.set_xlabel("x (m)")
@@ -533,9 +533,9 @@ def wheel_rolling(scene, output):
         % (rows[-1]["rigid_1_force_y"] / 1e3, fx.min(), fx.max(), fx.mean()))
 
 
-def penetration(scene, output, component, quarter, title, dimension, depth):
+def penetration(scene, output, component, quarter, title, dimension, depth, **options):
     picture(scene, output, "plastic_multiplier", "plastic multiplier", cmap="magma_r",
-            dimension=dimension)
+            dimension=dimension, **options)
     rows = steps(output)
     z = depth * column(rows, "load_factor")
     force = column(rows, component) * quarter
@@ -554,7 +554,10 @@ def pipe_penetration(scene, output):
 
 def cone_penetration(scene, output):
     fig, ax, z, f = penetration(scene, output, "rigid_1_force_z", 4,
-                                "cone: force on the whole cone (4 x the quarter)", 3, 0.4)
+                                "cone: force on the whole cone (4 x the quarter)", 3, 0.4,
+                                limits=(0, 1.5), outline=[(0, 0.35), (0.15, 0.61),
+                                                          (0.15, 1.01), (0, 1.01)],
+                                extent=((0, 0), (0.75, 1.05)))
     su = 2e4 / math.sqrt(3)
     area = math.pi * 0.15 ** 2
     ax2 = ax.twinx()
