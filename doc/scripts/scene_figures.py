@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Figures of doc/scenes.md: the strip footing's load-settlement curve against
-Prandtl's limit load, and the cantilever's deflection against beam theory.
+"""Figures of doc/figures/: the strip footing's load-settlement curve against
+Prandtl's limit load, and the cantilever's deflection against beam theory
+under refinement (doc/cookbook/cantilever.md cites it).
 Usage: python3 doc/scripts/scene_figures.py build/impm"""
 import csv
 import os
