@@ -1,342 +1,93 @@
 // build/impm [scene.prm] [--set "Subsection/Entry=value"]... : run a scene.
+//
+// A thin launcher that links no deal.II: loading deal.II and the libraries
+// it links (about 200, whose symbols the dynamic loader binds) takes a
+// quarter of a second, which `impm --help` need not pay. For everything else
+// it loads the core library (beside the executable in the build tree, in the
+// library directory of an installation) and calls impm_program_main().
 
-#include <deal.II/base/exceptions.h>
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/utilities.h>
+#include <impm/program/command_line_text.h>
 
-#include <impm/base/errors.h>
-#include <impm/base/stop_signal.h>
-#include <impm/core/default_scene.h>
-#include <impm/core/parameters.h>
-#include <impm/io/scene_input.h>
-#include <impm/io/shared_libraries.h>
-#include <impm/simulator/material_test.h>
-#include <impm/simulator/run.h>
+#include <dlfcn.h>
+#include <limits.h>
+#include <signal.h>
+#include <unistd.h>
 
-#include <csignal>
-#include <cstdlib>
-#include <filesystem>
 #include <iostream>
 #include <string>
-#include <vector>
 
 namespace
 {
-  const char *usage =
-    "Usage: impm [SCENE.prm] [options]\n"
-    "\n"
-    "Runs an implicit material point analysis of the scene in SCENE.prm\n"
-    "(a deal.II parameter file); without SCENE.prm, runs the built-in\n"
-    "default scene (prm/column_compaction.prm).\n"
-    "\n"
-    "Options:\n"
-    "  --set \"Subsection/Entry=value\"  override one entry of the scene\n"
-    "                                  (repeatable), e.g.\n"
-    "                                  --set \"Grid/Number of cells=1, 64\"\n"
-    "  --overwrite                     replace the run of another scene in\n"
-    "                                  the output directory (its files are\n"
-    "                                  removed first)\n"
-    "  --resume                        continue the run in the scene's\n"
-    "                                  output directory from its newest\n"
-    "                                  checkpoint (on any number of\n"
-    "                                  processes); the scene must be the\n"
-    "                                  one the checkpoint was written from\n"
-    "                                  but for the entries doc/running.md\n"
-    "                                  lists (load steps, end time, Output,\n"
-    "                                  Checkpoint, Testing)\n"
-    "  --resume-with-changes           --resume, accepting any changed\n"
-    "                                  entry of the scene\n"
-    "  --stop-after-step K             stop after K converged load steps\n"
-    "                                  (no summary.json is written)\n"
-    "  --quiet                         print only errors and the run's\n"
-    "                                  final summary (Output/Quiet)\n"
-    "  --verbose                       on an error, print deal.II's full\n"
-    "                                  report (source file, condition)\n"
-    "                                  after the one-line message\n"
-    "  --print-parameters              print every parameter with its\n"
-    "                                  default and documentation (with the\n"
-    "                                  plugins of the scene's Additional\n"
-    "                                  shared libraries), and exit\n"
-    "  --help                          print this text and exit\n"
-    "\n"
-    "Run in parallel with: mpirun -np N impm SCENE.prm\n";
-
-
-
-  /** @brief What the command line asks for. */
-  struct CommandLine
+  /** The directory of this executable ("" if it cannot be known). */
+  std::string
+  executable_directory()
   {
-    /** The scene file; empty for the default scene. */
-    std::string scene_file;
-    /** The `--set` assignments (and --overwrite's, --quiet's), in order. */
-    std::vector<std::string> overrides;
-    /** How the scene is run. */
-    impm::RunOptions options;
-    /** --print-parameters. */
-    bool print_parameters = false;
-  };
-
-
-
-  /**
-   * @brief Read the command line (but --help, --verbose). A mistake is an
-   * InputError.
-   */
-  CommandLine
-  parse_command_line(const int argc, char **argv)
-  {
-    CommandLine command_line;
-    for (int i = 1; i < argc; ++i)
-      {
-        const std::string argument = argv[i];
-        if (argument == "--verbose")
-          continue;
-        else if (argument == "--stop-after-step")
-          {
-            const std::string value = i + 1 < argc ? argv[++i] : "";
-            char             *end   = nullptr;
-            const long        steps = std::strtol(value.c_str(), &end, 10);
-            if (value.empty() || *end != '\0' || steps < 1 ||
-                steps > 1000000000)
-              throw impm::InputError("--stop-after-step '" + value +
-                                     "': expected a number of load steps "
-                                     "from 1 to 1e9.");
-            command_line.options.stop_after_step =
-              static_cast<unsigned int>(steps);
-          }
-        else if (argument == "--resume")
-          command_line.options.resume = true;
-        else if (argument == "--resume-with-changes")
-          command_line.options.resume =
-            command_line.options.resume_with_changes = true;
-        else if (argument == "--overwrite")
-          command_line.overrides.push_back("Existing output=overwrite");
-        else if (argument == "--quiet")
-          command_line.overrides.push_back("Output/Quiet=true");
-        else if (argument == "--print-parameters")
-          command_line.print_parameters = true;
-        else if (argument == "--set")
-          {
-            if (i + 1 >= argc)
-              throw impm::InputError("--set needs an argument "
-                                     "\"Subsection/Entry=value\".");
-            command_line.overrides.push_back(argv[++i]);
-          }
-        else if (argument.rfind("--", 0) == 0)
-          throw impm::InputError("Unknown option '" + argument +
-                                 "'; see impm --help.");
-        else if (command_line.scene_file.empty())
-          command_line.scene_file = argument;
-        else
-          throw impm::InputError("Only one scene file may be given; got '" +
-                                 command_line.scene_file + "' and '" +
-                                 argument + "'.");
-      }
-    return command_line;
+    char       path[PATH_MAX];
+    const auto length = readlink("/proc/self/exe", path, sizeof(path) - 1);
+    if (length <= 0)
+      return "";
+    const std::string file(path, static_cast<std::size_t>(length));
+    return file.substr(0, file.rfind('/'));
   }
 
 
 
-  /**
-   * @brief The rank an MPI launcher (Open MPI, MPICH, PMIx, Slurm's srun)
-   * or a batch system announces to this process in the environment, read
-   * before MPI is started; nullptr without a launcher.
-   */
-  const char *
-  launcher_rank_variable()
+  /** Whether @p path names a file that exists. */
+  bool
+  exists(const std::string &path)
   {
-    for (const char *name :
-         {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK", "SLURM_PROCID"})
-      if (const char *value = std::getenv(name))
-        return value;
-    return nullptr;
+    return access(path.c_str(), F_OK) == 0;
   }
-
-
-
-  /**
-   * @brief This process's rank as the launcher announces it; 0 without a
-   * launcher.
-   */
-  unsigned int
-  launcher_rank()
-  {
-    const char *value = launcher_rank_variable();
-    return value == nullptr ?
-             0 :
-             static_cast<unsigned int>(std::strtoul(value, nullptr, 10));
-  }
-
-
-
-  /**
-   * @brief What needs no MPI: --help (anywhere on the command line) and
-   * --print-parameters (with the plugin libraries the scene names loaded).
-   * Started under mpirun, only the first process prints.
-   * @return The exit status.
-   */
-  int
-  run_without_mpi(const int argc, char **argv, const bool verbose)
-  {
-    const bool is_root = launcher_rank() == 0;
-    for (int i = 1; i < argc; ++i)
-      if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
-        {
-          if (is_root)
-            std::cout << usage;
-          return 0;
-        }
-    try
-      {
-        const CommandLine command_line = parse_command_line(argc, argv);
-        const std::string error        = impm::SharedLibraries::load(
-          impm::SharedLibraries::libraries_named(command_line.scene_file,
-                                                 command_line.overrides));
-        if (!error.empty())
-          throw impm::InputError(error);
-        dealii::ParameterHandler prm;
-        impm::declare_run_parameters(prm);
-        if (is_root)
-          prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
-        return 0;
-      }
-    catch (const std::exception &exception)
-      {
-        if (is_root)
-          {
-            std::cerr << "Error: " << impm::one_line_message(exception)
-                      << std::endl;
-            if (verbose)
-              std::cerr << exception.what() << std::endl;
-          }
-        return 1;
-      }
-  }
-
 } // namespace
+
+
 
 int
 main(int argc, char **argv)
 {
-  // First: a SIGTERM, SIGINT or SIGUSR1 at any later moment is noted, and
-  // the run saves its last converged state and stops (StopSignal).
-  impm::StopSignal::install();
-  // Open MPI's shared-file-pointer component 'sm' guards an MPI-IO file with
-  // a named semaphore in /dev/shm named after the file's base name
-  // (sem.OMPIO_grid for the checkpoint's grid): a run killed while it holds
-  // it (SIGKILL during a checkpoint) leaves it taken, and every later run on
-  // the machine then waits forever in its first checkpoint. IMPM uses no
-  // shared file pointer; without 'sm' Open MPI takes a component whose locks
-  // die with the process. A user's own choice (the variable set) is kept.
-  setenv("OMPI_MCA_sharedfp", "^sm", 0);
-  // A run without a launcher (no mpirun) is one process: Open MPI's singleton
-  // start then need not start a runtime daemon nor probe the network's
-  // transports, which halves its start (0.62 s to 0.30 s on this machine,
-  // measured on a scene refused at its first line). A user's own choice is
-  // kept here too.
-  if (launcher_rank_variable() == nullptr)
-    {
-      setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
-      setenv("OMPI_MCA_pml", "ob1", 0);
-    }
-  // Errors are reported by their message; a user needs no stack trace.
-  dealii::deal_II_exceptions::suppress_stacktrace_in_exceptions();
-  // A file-size limit (ulimit -f) makes a write fail with an error the
-  // program reports, instead of killing it with SIGXFSZ.
-  std::signal(SIGXFSZ, SIG_IGN);
-  bool verbose = false, without_mpi = false;
   for (int i = 1; i < argc; ++i)
-    {
-      const std::string argument = argv[i];
-      verbose                    = verbose || argument == "--verbose";
-      without_mpi = without_mpi || argument == "--help" || argument == "-h" ||
-                    argument == "--print-parameters";
-    }
-  // Starting MPI takes longer than printing a text.
-  if (without_mpi)
-    return run_without_mpi(argc, argv, verbose);
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
+      {
+        if (impm::CommandLineText::launcher_rank() == 0)
+          std::cout << impm::CommandLineText::usage;
+        return 0;
+      }
+  // The stop signals wait (blocked, not lost) until the program has
+  // installed its handlers: a SIGTERM while the libraries load would
+  // otherwise end the run without a word.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  for (const int signal : {SIGTERM, SIGINT, SIGUSR1})
+    sigaddset(&stop_signals, signal);
+  sigprocmask(SIG_BLOCK, &stop_signals, nullptr);
 
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  // Again: deal.II starts PETSc, whose PetscPopSignalHandler() sets SIGTERM
-  // (with SIGSEGV, SIGBUS, SIGFPE) back to the default.
-  impm::StopSignal::install();
-  const unsigned int rank =
-    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-  const bool is_root = rank == 0;
-  try
+  const std::string directory = executable_directory();
+  std::string       library   = IMPM_CORE_LIBRARY;
+  for (const std::string candidate :
+       {directory + "/" + IMPM_CORE_LIBRARY,
+        directory + "/" + IMPM_BIN_TO_LIB + "/" + IMPM_CORE_LIBRARY})
+    if (!directory.empty() && exists(candidate))
+      {
+        library = candidate;
+        break;
+      }
+  // Global: the plugins a scene loads, and Open MPI's own components,
+  // resolve their symbols against it.
+  void *handle = dlopen(library.c_str(), RTLD_NOW | RTLD_GLOBAL);
+  if (handle == nullptr)
     {
-      CommandLine        command_line = parse_command_line(argc, argv);
-      const std::string &scene_file   = command_line.scene_file;
-      impm::RunOptions  &options      = command_line.options;
-      // The plugins' libraries are loaded on every process before the
-      // entries are declared: their names are the entries' choices.
-      impm::throw_if_any_failed(impm::SharedLibraries::load(
-                                  impm::SharedLibraries::libraries_named(
-                                    scene_file, command_line.overrides)),
-                                MPI_COMM_WORLD,
-                                false);
-
-      dealii::ParameterHandler prm;
-      impm::declare_run_parameters(prm);
-      if (scene_file.empty())
-        impm::SceneInput::parse_text(prm, impm::default_scene, "default scene");
-      else
-        impm::SceneInput::parse_file(prm, scene_file);
-      for (const auto &assignment : command_line.overrides)
-        impm::SceneInput::apply_override(prm, assignment);
-      impm::SharedLibraries::check_read(prm,
-                                        scene_file,
-                                        command_line.overrides);
-      impm::SceneInput::check_numbers(prm);
-      impm::SceneInput::resolve_paths(prm, scene_file);
-
-      if (!scene_file.empty())
-        options.scene_file =
-          std::filesystem::absolute(scene_file).lexically_normal().string();
-      // A material test drives one point of Body 1's material and runs no
-      // scene: the root process alone.
-      if (impm::MaterialTest::enabled(prm))
-        {
-          if (is_root)
-            impm::MaterialTest::run(prm, std::cout);
-          return 0;
-        }
-      if (prm.get_integer("Dimension") == 2)
-        impm::run_scene<2>(prm, options, MPI_COMM_WORLD);
-      else
-        impm::run_scene<3>(prm, options, MPI_COMM_WORLD);
-    }
-  catch (const impm::StoppedBySignal &stop)
-    {
-      if (is_root)
-        std::cerr << stop.what() << std::endl;
-      return impm::StopSignal::exit_status(stop.signal);
-    }
-  catch (const std::exception &exception)
-    {
-      // An error all processes raise together is printed once; one raised
-      // by this process alone stops the others, which may be waiting for
-      // it in a collective operation.
-      const bool collective =
-        dynamic_cast<const impm::CollectiveError *>(&exception) != nullptr ||
-        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1;
-      if (collective && !is_root)
-        return 1;
-      std::cerr << "Error: "
-                << (collective ? "" : "process " + std::to_string(rank) + ": ")
-                << impm::one_line_message(exception) << std::endl;
-      if (verbose)
-        std::cerr << exception.what() << std::endl;
-      if (!collective)
-        MPI_Abort(MPI_COMM_WORLD, 1);
+      std::cerr << "Error: cannot load IMPM's library " << library << ": "
+                << dlerror() << std::endl;
       return 1;
     }
-  catch (...)
+  using Program = int (*)(int, char **);
+  const auto program =
+    reinterpret_cast<Program>(dlsym(handle, "impm_program_main"));
+  if (program == nullptr)
     {
-      std::cerr << "Error: process " << rank << ": unknown exception."
-                << std::endl;
-      MPI_Abort(MPI_COMM_WORLD, 1);
+      std::cerr << "Error: " << library
+                << " has no impm_program_main: " << dlerror() << std::endl;
+      return 1;
     }
-  return 0;
+  return program(argc, argv);
 }

@@ -4,8 +4,9 @@
 # tests/plugin_example/ configured against it with find_package(impm) and
 # built, and its scene (column.prm: the column under its own weight with the
 # plugin's material "plugin elastic", loaded by 'Additional shared
-# libraries') run by the installed program. Checked: the installed layout
-# and the program's relative RPATH; the plugin run's test summary equals
+# libraries') run by the installed program. Checked: the installed layout,
+# a launcher that links no deal.II and finds its library when the prefix is
+# moved; the plugin run's test summary equals
 # that of the same scene with the built-in "Hencky elastic", and its step-1
 # error, mass and base reaction equal the hand-checked expected.txt (see
 # column.prm); --print-parameters lists the plugin; a library that does not
@@ -25,8 +26,15 @@ for file in bin/impm lib/libimpm_core.so include/impm/mechanics/material.h \
   share/impm/README.md; do
   [ -f "$prefix/$file" ] || fail "the install has no $file"
 done
-readelf -d "$prefix/bin/impm" | grep -q 'R.*PATH.*\$ORIGIN/\.\./lib' ||
-  fail "the installed impm has no RPATH \$ORIGIN/../lib"
+# The program is a launcher that links no deal.II and finds the library
+# relative to itself: the prefix moved elsewhere still runs.
+readelf -d "$prefix/bin/impm" | grep NEEDED | grep -q deal &&
+  fail "the installed launcher links deal.II"
+mv "$prefix" "$prefix.moved" && mkdir "$prefix"
+"$prefix.moved/bin/impm" --print-parameters > moved.txt 2> log.txt ||
+  fail "the installed program, moved, did not find its library"
+grep -q "^subsection Grid" moved.txt || fail "the moved program printed no parameters"
+rmdir "$prefix" && mv "$prefix.moved" "$prefix"
 
 cmake -S "$example" -B plugin_build -DCMAKE_PREFIX_PATH="$prefix" \
   > log.txt 2>&1 || fail "configuring the plugin with find_package(impm)"

@@ -15,10 +15,11 @@
 #     once a further step has converged: status 143, the line;
 #  4. --resume to the end: the uninterrupted run's final state (the test
 #     summary; on two processes to numdiff's tolerances);
-#  5. SIGTERM 1.2 s after the start, about when the first step is solved
-#     (the handlers are installed first thing in main; the shared
-#     libraries take about 0.4 s to load, before main, when a signal still
-#     ends the process): status 143 and the line.
+#  5. SIGTERM 1.2 s after the start, about when the first step is solved:
+#     status 143 and the line;
+#  6. on one process, SIGTERM 20 ms after the start, while the launcher
+#     loads the libraries (it blocks the stop signals until the program's
+#     handlers are in place): status 143 and the line.
 # Usage: sigint_stop.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -85,5 +86,17 @@ sleep 1.2
 kill -TERM $(ranks $pid)
 wait $pid
 stopped early.txt $? 143 SIGTERM
+# 6. One process: SIGTERM 20 ms after the start, while the launcher loads
+# the libraries (the signals wait, blocked, until the handlers are in
+# place; before, such a signal ended the run without a word).
+if [ ${#launcher[@]} -eq 0 ]; then
+  rm -rf results
+  run > loading.txt 2>&1 &
+  pid=$!
+  sleep 0.02
+  kill -TERM $pid
+  wait $pid
+  stopped loading.txt $? 143 SIGTERM
+fi
 cat part1.txt part2.txt early.txt
 echo "sigint_stop: SIGINT and SIGTERM abandoned the step, saved the last converged state and stopped; the resumed run ends in the uninterrupted state"

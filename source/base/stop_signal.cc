@@ -1,5 +1,7 @@
 #include <impm/base/stop_signal.h>
 
+#include <signal.h>
+
 #include <csignal>
 
 namespace impm
@@ -26,6 +28,18 @@ namespace impm
   {
     for (const int signal : {SIGTERM, SIGINT, SIGUSR1})
       std::signal(signal, note_stop_signal);
+  }
+
+
+
+  void
+  StopSignal::unblock()
+  {
+    sigset_t signals;
+    sigemptyset(&signals);
+    for (const int signal : {SIGTERM, SIGINT, SIGUSR1})
+      sigaddset(&signals, signal);
+    sigprocmask(SIG_UNBLOCK, &signals, nullptr);
   }
 
 

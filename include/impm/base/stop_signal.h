@@ -23,6 +23,12 @@ namespace impm
     static void
     install();
 
+    /** @brief Let SIGTERM, SIGINT and SIGUSR1 through: the launcher
+     *  (source/main.cc) blocks them while it loads the libraries, and one
+     *  that came meanwhile is delivered now, to the installed handler. */
+    static void
+    unblock();
+
     /** @brief The signal this process received (0: none). */
     static int
     received();
