@@ -148,7 +148,8 @@ namespace impm
   Checkpoint::write(const std::function<void(const std::string &)> &save_grid,
                     const RunState                                 &state,
                     const std::string                              &scene_text,
-                    const std::uintmax_t estimated_size) const
+                    const std::pair<std::uintmax_t, std::uintmax_t>
+                      &estimated_size) const
   {
     const bool root =
       dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
@@ -156,16 +157,16 @@ namespace impm
     run_collectively(communicator, [&]() {
       if (root)
         {
-          // The space for a checkpoint about as large as the last one, or
-          // the estimate (the first).
-          auto [bytes, largest] =
+          // The space for a checkpoint as large as the last one with a
+          // tenth more (the points may grow), or as the estimate, an upper
+          // bound (the first checkpoint).
+          const auto [last_bytes, last_largest] =
             directory_size((base / complete_name).string());
-          bytes                      = std::max(bytes, estimated_size);
-          largest                    = std::max(largest, estimated_size);
-          const std::string shortage = space_shortage(output_directory,
-                                                      bytes + bytes / 10,
-                                                      largest + largest / 10,
-                                                      "the checkpoint");
+          const std::string shortage = space_shortage(
+            output_directory,
+            std::max(last_bytes + last_bytes / 10, estimated_size.first),
+            std::max(last_largest + last_largest / 10, estimated_size.second),
+            "the checkpoint");
           if (!shortage.empty())
             throw std::runtime_error(shortage + kept_or_none(base) + ".");
           fs::remove_all(base / partial_name);

@@ -411,22 +411,24 @@ namespace impm
 
 
   template <int dim>
-  std::uintmax_t
+  std::pair<std::uintmax_t, std::uintmax_t>
   MPMSolver<dim>::estimated_checkpoint_size() const
   {
-    // The points' serialized data, and per cell p4est's quadrant and the
-    // sizes deal.II records of the data attached to it (about 40 bytes;
-    // 64 taken), and the headers, the state and the scene.
+    // The largest file holds the points' serialized data and a size per
+    // cell (8 bytes; 16 taken); all together add p4est's quadrant and the
+    // fixed data per cell (about 40 bytes; 64 taken), the headers, the
+    // state and the scene.
     const auto    &particles = material_points.particles();
     std::uintmax_t local     = 0;
     if (particles.n_locally_owned_particles() > 0)
       local =
         static_cast<std::uintmax_t>(particles.n_locally_owned_particles()) *
         particles.begin()->serialized_size_in_bytes();
-    return Utilities::MPI::sum(local, communicator) +
-           64 * static_cast<std::uintmax_t>(
-                  grid.get_triangulation().n_global_active_cells()) +
-           scene_text.size() + 16384;
+    const std::uintmax_t points = Utilities::MPI::sum(local, communicator);
+    const std::uintmax_t cells =
+      grid.get_triangulation().n_global_active_cells();
+    return {points + 64 * cells + scene_text.size() + 16384,
+            points + 16 * cells};
   }
 
 

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
 
 namespace impm
 {
@@ -65,7 +66,7 @@ namespace impm
      * rank 0 writes @p state, the scene @p scene_text (from
      * SceneRecord::to_text()) and the manifest, and puts the checkpoint in
      * place. Before anything is written, the free space is checked against
-     * the larger of @p estimated_size and the last checkpoint's size, with
+     * the larger of @p estimated_size and the last checkpoint's sizes with
      * a tenth more: a full disk met inside the grid's save (p4est's MPI-IO)
      * aborts instead of reporting. A failure leaves no partial directory.
      *
@@ -73,13 +74,14 @@ namespace impm
      * @param state The run's state, written as `state.txt`.
      * @param scene_text The scene, written as `scene.prm`.
      * @param estimated_size The checkpoint's expected size in bytes on all
-     *   processes together (the points' serialized data and the cells').
+     *   processes together and that of its largest file (the points'
+     *   serialized data and the cells').
      */
     void
     write(const std::function<void(const std::string &)> &save_grid,
           const RunState                                 &state,
           const std::string                              &scene_text,
-          const std::uintmax_t                            estimated_size) const;
+          const std::pair<std::uintmax_t, std::uintmax_t> &estimated_size) const;
 
     /**
      * @brief Choose the checkpoint to resume from (collective; to be

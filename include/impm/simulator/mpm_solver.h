@@ -25,6 +25,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impm
@@ -151,9 +152,10 @@ namespace impm
                      const unsigned int     step_number,
                      const double           elapsed);
 
-    /** The bytes a checkpoint will take on all processes together, an
-     *  estimate from the points and cells (collective). */
-    std::uintmax_t
+    /** The bytes a checkpoint will take on all processes together and
+     *  those of its largest file (the points' data), estimated from the
+     *  points and cells (collective). */
+    std::pair<std::uintmax_t, std::uintmax_t>
     estimated_checkpoint_size() const;
 
     /** Whether to stop (and checkpoint) now: the wall-time limit has
