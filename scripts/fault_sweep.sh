@@ -101,28 +101,7 @@ summary reference_log.txt > reference.txt
 checkpointing=(--set "Checkpoint/Interval=1")
 run "${checkpointing[@]}" --stop-after-step 2 > part1.txt 2>&1
 mv results pristine
-damage() {
-  /usr/bin/python3 - "$1" "$2" << 'PYTHON'
-import os, sys
-path, mode = sys.argv[1], sys.argv[2]
-size = os.path.getsize(path)
-if mode == "truncate":
-    os.truncate(path, size // 2)
-elif mode == "zero":
-    with open(path, "r+b") as f:
-        f.write(bytes(size))
-elif mode == "random":
-    with open(path, "r+b") as f:
-        f.write(os.urandom(size))
-else:  # flipN: 8 bytes inverted at offset N/10 of the file
-    offset = min(max(0, size - 8), size * int(mode[4:]) // 10)
-    with open(path, "r+b") as f:
-        f.seek(offset)
-        data = f.read(8)
-        f.seek(offset)
-        f.write(bytes(b ^ 0xFF for b in data))
-PYTHON
-}
+damage() { /usr/bin/python3 "$here/../tests/damage_file.py" "$1" "$2"; }
 files=$(cd pristine/checkpoint && ls)
 n_a=0
 [[ $parts == *A* ]] || files=""

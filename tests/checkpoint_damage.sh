@@ -15,30 +15,13 @@
 #  3. both damaged: refused, naming the newest's file.
 # Usage: checkpoint_damage.sh IMPM SCENE [MPIEXEC N]
 scene=$2
-source "$(dirname "$0")/script_helpers.sh" "$@"
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/script_helpers.sh" "$@"
 settings=(--set "Checkpoint/Interval=1")
 
 # damage FILE MODE: truncate (to half), zero (same size), flip (8 bytes in
 # the middle inverted).
-damage() {
-  /usr/bin/python3 - "$1" "$2" << 'PYTHON'
-import os, sys
-path, mode = sys.argv[1], sys.argv[2]
-size = os.path.getsize(path)
-if mode == "truncate":
-    os.truncate(path, size // 2)
-elif mode == "zero":
-    with open(path, "r+b") as f:
-        f.write(bytes(size))
-else:
-    offset = max(0, size // 2 - 4)
-    with open(path, "r+b") as f:
-        f.seek(offset)
-        data = f.read(8)
-        f.seek(offset)
-        f.write(bytes(b ^ 0xFF for b in data))
-PYTHON
-}
+damage() { /usr/bin/python3 "$here/damage_file.py" "$1" "$2"; }
 
 # refused NAME FILE_PATTERN: the last run (out.txt, status $status) stopped
 # with one clear line naming the file.
