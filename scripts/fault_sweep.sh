@@ -112,13 +112,20 @@ for file in $files; do
       [ $previous = without ] && rm -rf results/checkpoint.old
       damage "results/checkpoint/$file" $mode
       run "${checkpointing[@]}" --resume > out.txt 2>&1
-      classify A "$file $mode, $previous the previous checkpoint" $? out.txt
+      status=$?
+      classify "A_$previous" "$file $mode, $previous the previous checkpoint" $status out.txt
+      # A resume must say that it fell back to the previous checkpoint.
+      if [ $status -eq 0 ] && ! grep -q "^Note: the newest checkpoint is damaged: .*checkpoint/$file" out.txt; then
+        echo "  A $file $mode, $previous the previous checkpoint: resumed without naming the damaged file"
+        bad=$((bad + 1))
+      fi
       n_a=$((n_a + 1))
     done
   done
 done
 [[ $parts == *A* ]] && echo "A. $n_a resumes from damaged checkpoints ($(echo $files | wc -w) files x 13 damages x with/without the previous one):" \
-  "refused ${count[A.refused]:-0}, resumed to the same answer ${count[A.same_answer]:-0}"
+  "without it refused ${count[A_without.refused]:-0}, resumed ${count[A_without.same_answer]:-0};" \
+  "with it refused ${count[A_with.refused]:-0}, resumed from it to the same answer ${count[A_with.same_answer]:-0}"
 
 # ---------------------------------------------------------------- B.
 # damaged_files DIRECTORY: a *.tmp left, a CSV ending without a newline or

@@ -148,8 +148,7 @@ namespace impm
   Checkpoint::write(const std::function<void(const std::string &)> &save_grid,
                     const RunState                                 &state,
                     const std::string                              &scene_text,
-                    const std::pair<std::uintmax_t, std::uintmax_t>
-                      &estimated_size) const
+                    const Size &estimated_size) const
   {
     const bool root =
       dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
@@ -162,11 +161,13 @@ namespace impm
           // bound (the first checkpoint).
           const auto [last_bytes, last_largest] =
             directory_size((base / complete_name).string());
-          const std::string shortage = space_shortage(
-            output_directory,
-            std::max(last_bytes + last_bytes / 10, estimated_size.first),
-            std::max(last_largest + last_largest / 10, estimated_size.second),
-            "the checkpoint");
+          const std::string shortage =
+            space_shortage(output_directory,
+                           std::max(last_bytes + last_bytes / 10,
+                                    estimated_size.total),
+                           std::max(last_largest + last_largest / 10,
+                                    estimated_size.largest_file),
+                           "the checkpoint");
           if (!shortage.empty())
             throw std::runtime_error(shortage + kept_or_none(base) + ".");
           fs::remove_all(base / partial_name);
@@ -218,7 +219,6 @@ namespace impm
       if (reached_file_size_limit(entry.path().string()))
         {
           const std::string name = entry.path().string();
-          fs::remove_all(base / partial_name);
           throw std::runtime_error(
             "Writing the checkpoint file " + name +
             " failed (File too large: it reached the file-size limit)" +

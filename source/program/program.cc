@@ -46,7 +46,7 @@ namespace
 
 
   /**
-   * @brief Read the command line (but --help, --verbose). A mistake is an
+   * @brief Read the command line (but --verbose; the launcher answers --help). A mistake is an
    * InputError.
    */
   CommandLine
@@ -105,22 +105,15 @@ namespace
 
 
   /**
-   * @brief What needs no MPI: --help (anywhere on the command line) and
-   * --print-parameters (with the plugin libraries the scene names loaded).
-   * Started under mpirun, only the first process prints.
+   * @brief What needs no MPI: --print-parameters (with the plugin libraries
+   * the scene names loaded; the launcher answers --help). Started under
+   * mpirun, only the first process prints.
    * @return The exit status.
    */
   int
-  run_without_mpi(const int argc, char **argv, const bool verbose)
+  print_parameters(const int argc, char **argv, const bool verbose)
   {
     const bool is_root = impm::CommandLineText::launcher_rank() == 0;
-    for (int i = 1; i < argc; ++i)
-      if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
-        {
-          if (is_root)
-            std::cout << impm::CommandLineText::usage;
-          return 0;
-        }
     try
       {
         const CommandLine command_line = parse_command_line(argc, argv);
@@ -179,17 +172,16 @@ impm_program_main(int argc, char **argv)
   // A file-size limit (ulimit -f) makes a write fail with an error the
   // program reports, instead of killing it with SIGXFSZ.
   std::signal(SIGXFSZ, SIG_IGN);
-  bool verbose = false, without_mpi = false;
+  bool verbose = false, parameters_only = false;
   for (int i = 1; i < argc; ++i)
     {
       const std::string argument = argv[i];
       verbose                    = verbose || argument == "--verbose";
-      without_mpi = without_mpi || argument == "--help" || argument == "-h" ||
-                    argument == "--print-parameters";
+      parameters_only = parameters_only || argument == "--print-parameters";
     }
   // Starting MPI takes longer than printing a text.
-  if (without_mpi)
-    return run_without_mpi(argc, argv, verbose);
+  if (parameters_only)
+    return print_parameters(argc, argv, verbose);
 
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // Again: deal.II starts PETSc, whose PetscPopSignalHandler() sets SIGTERM

@@ -411,7 +411,7 @@ namespace impm
 
 
   template <int dim>
-  std::pair<std::uintmax_t, std::uintmax_t>
+  Checkpoint::Size
   MPMSolver<dim>::estimated_checkpoint_size() const
   {
     // The largest file holds the points' serialized data and a size per

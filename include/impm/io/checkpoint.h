@@ -11,7 +11,6 @@
 #include <filesystem>
 #include <functional>
 #include <string>
-#include <utility>
 
 namespace impm
 {
@@ -60,6 +59,15 @@ namespace impm
     Checkpoint(const std::string &output_directory,
                const MPI_Comm     communicator);
 
+    /** @brief The size of a checkpoint, in bytes. */
+    struct Size
+    {
+      /** All its files together, on all processes. */
+      std::uintmax_t total;
+      /** Its largest file (the points' data). */
+      std::uintmax_t largest_file;
+    };
+
     /**
      * @brief Write a checkpoint (collective): @p save_grid saves the grid
      * and the points under the file name it is given, on every process;
@@ -73,15 +81,14 @@ namespace impm
      * @param save_grid Saves the grid and the points (collective).
      * @param state The run's state, written as `state.txt`.
      * @param scene_text The scene, written as `scene.prm`.
-     * @param estimated_size The checkpoint's expected size in bytes on all
-     *   processes together and that of its largest file (the points'
-     *   serialized data and the cells').
+     * @param estimated_size An upper bound of the checkpoint's size (the
+     *   points' serialized data and the cells').
      */
     void
     write(const std::function<void(const std::string &)> &save_grid,
           const RunState                                 &state,
           const std::string                              &scene_text,
-          const std::pair<std::uintmax_t, std::uintmax_t> &estimated_size) const;
+          const Size                                     &estimated_size) const;
 
     /**
      * @brief Choose the checkpoint to resume from (collective; to be

@@ -1,9 +1,10 @@
 #ifndef impm_program_command_line_h
 #define impm_program_command_line_h
 
-// What both the program's thin launcher (source/main.cc, which links no
-// deal.II) and the program itself (source/program/program.cc) need: the
-// usage text and the rank an MPI launcher announces. Standard C++ only.
+// The command line's text and the rank an MPI launcher announces, in
+// standard C++ only: the launcher (source/main.cc, which links no deal.II)
+// prints the usage text, and it and the program (source/program/program.cc)
+// print only on the first process.
 
 #include <cstdlib>
 #include <initializer_list>

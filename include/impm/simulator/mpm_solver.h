@@ -11,6 +11,7 @@
 #include <impm/core/parameters.h>
 #include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
+#include <impm/io/checkpoint.h>
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>
 #include <impm/postprocess/postprocessor.h>
@@ -25,7 +26,6 @@
 #include <functional>
 #include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace impm
@@ -155,7 +155,7 @@ namespace impm
     /** The bytes a checkpoint will take on all processes together and
      *  those of its largest file (the points' data), estimated from the
      *  points and cells (collective). */
-    std::pair<std::uintmax_t, std::uintmax_t>
+    Checkpoint::Size
     estimated_checkpoint_size() const;
 
     /** Whether to stop (and checkpoint) now: the wall-time limit has
