@@ -1,9 +1,11 @@
+#include <impm/base/errors.h>
 #include <impm/core/point_properties.h>
 #include <impm/coupling/central_difference.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace impm
 {
@@ -39,6 +41,35 @@ namespace impm
     const double speed = std::sqrt(Utilities::MPI::max(largest, communicator));
     return speed > 0. ? courant_number * smallest_cell_size(grid) / speed :
                         std::numeric_limits<double>::max();
+  }
+
+
+
+  template <int dim>
+  void
+  check_explicit_time_step(const CouplingInputs<dim>   &inputs,
+                           const TimeIntegrator        &integrator,
+                           const StiffnessDamping<dim> &damping)
+  {
+    double largest = 0.;
+    for (const auto &body : inputs.parameters.bodies)
+      largest =
+        std::max(largest, body.material->p_wave_modulus() / body.density);
+    const double h      = smallest_cell_size(inputs.grid.cartesian());
+    const double stable = integrator.courant_number *
+                          damping.critical_time_step(h / std::sqrt(largest));
+    if (inputs.time.nominal_step > stable * (1. + 1e-12))
+      {
+        std::ostringstream out;
+        out << "Inertia: the time step " << inputs.time.nominal_step
+            << " s is above the stable explicit step " << stable
+            << " s (Courant number " << integrator.courant_number
+            << ", smallest cell " << h << " m, speed of sound "
+            << std::sqrt(largest) << " m/s"
+            << (damping.active() ? ", with the stiffness damping" : "")
+            << "): set 'Time/Time step' to at most that.";
+        throw InputError(out.str());
+      }
   }
 
 
@@ -130,4 +161,12 @@ namespace impm
                           std::vector<double> &,
                           std::vector<double> &,
                           std::vector<double> &);
+  template void
+  check_explicit_time_step(const CouplingInputs<2> &,
+                           const TimeIntegrator &,
+                           const StiffnessDamping<2> &);
+  template void
+  check_explicit_time_step(const CouplingInputs<3> &,
+                           const TimeIntegrator &,
+                           const StiffnessDamping<3> &);
 } // namespace impm

@@ -10,6 +10,7 @@
 #include <impm/coupling/central_difference.h>
 #include <impm/coupling/coupling.h>
 #include <impm/coupling/nodal_momentum.h>
+#include <impm/coupling/stiffness_damping.h>
 #include <impm/coupling/time_integrator.h>
 
 #include <algorithm>
@@ -61,7 +62,9 @@ namespace impm
      * Mass-proportional (Rayleigh) damping @f$C = \alpha_R M@f$ adds
      * @f$\alpha_R (M v^{n+1} + k_r p)@f$, weighed like the internal force.
      * The matrix gains @f$(k_m c_1 + \alpha_R\gamma\Delta t\, c_1) M@f$ on
-     * its diagonal, constant over the step.
+     * its diagonal, constant over the step. The stiffness-proportional
+     * part, @f$\beta_R K_e@f$, is a viscous stress at the points
+     * (StiffnessDamping), weighed alike.
      *
      * The first step's nodal acceleration is that of the balance at the
      * start, @f$M a^0 = f_{ext}(0) - f_{int}(0)@f$ (a body under gravity
@@ -137,12 +140,13 @@ namespace impm
         , initial_velocity_expression(inputs.prm.get("Initial velocity"))
         , grid(inputs.grid)
         , nodes(inputs.grid)
+        , stiffness_damping(integrator)
       {
         if (!inputs.time.in_time())
           throw InputError("Inertia needs time: set 'Time/End time' above 0 "
                            "(the load steps are then time steps).");
         if (integrator.is_explicit())
-          check_time_step(inputs);
+          check_explicit_time_step(inputs, integrator, stiffness_damping);
         if (initial_velocity_expression != "0")
           {
             initial_velocity = std::make_unique<FunctionParser<dim>>(dim);
@@ -224,11 +228,13 @@ namespace impm
         const MPI_Comm communicator =
           grid.get_triangulation().get_communicator();
         if (integrator.is_explicit())
-          stable_step_size = stable_time_step(material_points,
-                                              system.point_steps,
-                                              grid.cartesian(),
-                                              integrator.courant_number,
-                                              communicator);
+          stable_step_size =
+            integrator.courant_number * stiffness_damping.critical_time_step(
+                                          stable_time_step(material_points,
+                                                           system.point_steps,
+                                                           grid.cartesian(),
+                                                           1.,
+                                                           communicator));
         else
           // The momentum part of the inertial force, M v / (beta dt), whose
           // size floors the residual's reference.
@@ -259,8 +265,8 @@ namespace impm
                      NodalVector               &increment) override
       {
         // The run started with its nominal step at most the Courant number
-        // times the stable step (check_time_step()); a step is cut only
-        // when the points' state has brought the true limit (Courant
+        // times the stable step (check_explicit_time_step()); a step is cut
+        // only when the points' state has brought the true limit (Courant
         // number 1) below it, so that small changes of density do not cut
         // steps the Courant number's margin covers.
         const double limit = stable_step_size / integrator.courant_number;
@@ -288,15 +294,21 @@ namespace impm
       {
         if (integrator.is_explicit())
           {
-            central_difference_step(nodes,
-                                    internal_minus_external,
-                                    time_step,
-                                    integrator,
-                                    *current_points,
-                                    current_system->point_steps,
-                                    explicit_increment,
-                                    point_velocities,
-                                    point_accelerations);
+            central_difference_step(
+              nodes,
+              stiffness_damping.active() ?
+                stiffness_damping.damped_residual(nodes,
+                                                  *current_points,
+                                                  *current_system,
+                                                  internal_minus_external) :
+                internal_minus_external,
+              time_step,
+              integrator,
+              *current_points,
+              current_system->point_steps,
+              explicit_increment,
+              point_velocities,
+              point_accelerations);
             return;
           }
         if (integrator.alpha_f > 0.)
@@ -339,6 +351,11 @@ namespace impm
                 diagonal > 0.)
               matrix.add(row, row, diagonal * c * nodes.mass(i));
           }
+        if (stiffness_damping.active())
+          stiffness_damping.add_implicit_matrix(*current_points,
+                                                system,
+                                                time_step,
+                                                matrix);
         return true;
       }
 
@@ -394,11 +411,19 @@ namespace impm
               norm_squared += force * force;
               force_on_material[grid.component(i)] += force;
             }
-        // The reference for the residual: the inertial force, floored by
-        // a millionth of its momentum part M v / (beta dt). A body moving
-        // freely (no load, no acceleration) has an inertial force of
-        // round-off size, made of parts of that size: without the floor
-        // its residual could never fall below the tolerance relative to it.
+        // The viscous stress: internal, not in force_on_material.
+        if (stiffness_damping.active())
+          norm_squared += stiffness_damping.add_implicit_forces(nodes,
+                                                                *current_points,
+                                                                *current_system,
+                                                                increment,
+                                                                time_step,
+                                                                internal_force);
+        // The reference: the inertial force, floored by a millionth of its
+        // momentum part M v / (beta dt). A body moving freely (no load, no
+        // acceleration) has an inertial force of round-off size, made of
+        // parts of that size: without the floor its residual could never
+        // fall below the tolerance relative to it.
         inertial_force_norm =
           std::hypot(std::sqrt(Utilities::MPI::sum(
                        norm_squared,
@@ -521,32 +546,6 @@ namespace impm
       }
 
     private:
-      /** @brief Refuse a nominal time step above the stable explicit step
-       *  of the bodies' initial state (their density and P-wave modulus),
-       *  naming the stable step. */
-      void
-      check_time_step(const CouplingInputs<dim> &inputs) const
-      {
-        double largest = 0.;
-        for (const auto &body : inputs.parameters.bodies)
-          largest =
-            std::max(largest, body.material->p_wave_modulus() / body.density);
-        const double h = smallest_cell_size(grid.cartesian());
-        const double stable =
-          integrator.courant_number * h / std::sqrt(largest);
-        if (inputs.time.nominal_step > stable * (1. + 1e-12))
-          {
-            std::ostringstream out;
-            out << "Inertia: the time step " << inputs.time.nominal_step
-                << " s is above the stable explicit step " << stable
-                << " s (Courant number " << integrator.courant_number
-                << ", smallest cell " << h << " m, speed of sound "
-                << std::sqrt(largest)
-                << " m/s): set 'Time/Time step' to at most that.";
-            throw InputError(out.str());
-          }
-      }
-
       /** The number of local DoFs (owned and ghosts). */
       unsigned int
       n_local() const
@@ -574,6 +573,8 @@ namespace impm
       std::vector<double> point_velocities, point_accelerations;
       /** The nodes' mass and momentum of the step's start. */
       NodalMomentum<dim> nodes;
+      /** The stiffness-proportional damping (inactive at 0). */
+      StiffnessDamping<dim> stiffness_damping;
       /** The residual of the step's start on the local DoFs (empty
        *  unless generalised-alpha). */
       std::vector<double> start_residual;

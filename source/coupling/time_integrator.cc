@@ -96,6 +96,20 @@ namespace impm
                       "coefficient alpha in 1/s (damping force alpha M "
                       "v; a mode of angular frequency omega is damped "
                       "at the ratio alpha / (2 omega)). 0: none.");
+    prm.declare_entry("Stiffness damping",
+                      "0",
+                      Patterns::Double(0.),
+                      "The stiffness-proportional Rayleigh damping "
+                      "coefficient beta in s: a viscous stress beta D : "
+                      "d at every point, with its material's elastic "
+                      "moduli (a pressure-dependent law's reference ones) "
+                      "and the rate of strain d of the nodal velocity, so "
+                      "that a mode of angular frequency omega is damped at "
+                      "the ratio beta omega / 2 (the highest frequencies "
+                      "most). With 'Mass damping' alpha: Rayleigh damping "
+                      "C = alpha M + beta K. It lowers the stable explicit "
+                      "time step by the factor sqrt(1 + z^2) - z, z = beta "
+                      "/ (the undamped stable step). 0: none.");
   }
 
 
@@ -111,6 +125,7 @@ namespace impm
     generalised_alpha      = name == "generalised-alpha";
     spectral_radius        = prm.get_double("Spectral radius");
     mass_damping           = prm.get_double("Mass damping");
+    stiffness_damping      = prm.get_double("Stiffness damping");
     local_damping          = prm.get_double("Local damping");
     consistent_mass        = prm.get("Mass") == "consistent";
     mass_regularisation    = prm.get_double("Mass regularisation");
@@ -179,6 +194,8 @@ namespace impm
     out << (consistent_mass ? ", consistent mass" : ", lumped mass");
     if (mass_damping > 0.)
       out << ", mass damping " << mass_damping << " 1/s";
+    if (stiffness_damping > 0.)
+      out << ", stiffness damping " << stiffness_damping << " s";
     if (local_damping > 0.)
       out << ", local damping " << local_damping;
     if (flip_fraction < 1.)

@@ -70,6 +70,16 @@ namespace impm
 
 
 
+  double
+  Material::shear_modulus() const
+  {
+    const double E = elastic_modulus(), M = p_wave_modulus();
+    const double b = 3. * M + E;
+    return (b - std::sqrt(std::max(b * b - 16. * E * M, 0.))) / 8.;
+  }
+
+
+
   std::unique_ptr<Material>
   Material::with_reduced_strength(const double) const
   {

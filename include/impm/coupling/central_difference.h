@@ -4,7 +4,9 @@
 #include <deal.II/base/mpi.h>
 
 #include <impm/basis/basis_functions.h>
+#include <impm/coupling/coupling.h>
 #include <impm/coupling/nodal_momentum.h>
+#include <impm/coupling/stiffness_damping.h>
 #include <impm/coupling/time_integrator.h>
 #include <impm/points/material_points.h>
 #include <impm/points/point_step.h>
@@ -34,6 +36,18 @@ namespace impm
                    const CartesianGrid<dim>  &grid,
                    const double               courant_number,
                    const MPI_Comm             communicator);
+
+  /**
+   * @brief Refuse a scene's nominal time step above the stable explicit
+   * step of its bodies' initial state (their density and P-wave modulus,
+   * @p integrator's Courant number, with @p damping), naming the stable
+   * step (one-line InputError).
+   */
+  template <int dim>
+  void
+  check_explicit_time_step(const CouplingInputs<dim>   &inputs,
+                           const TimeIntegrator        &integrator,
+                           const StiffnessDamping<dim> &damping);
 
   /**
    * @brief One step of the central difference rule with the lumped mass

@@ -86,6 +86,9 @@ namespace impm
     double gamma;
     /** The mass-proportional damping coefficient (1/s). */
     double mass_damping;
+    /** The stiffness-proportional damping coefficient (s;
+     *  StiffnessDamping). */
+    double stiffness_damping;
     /** Local non-viscous damping's fraction (explicit only). */
     double local_damping;
     /** Whether the implicit mass is the consistent matrix. */

@@ -193,6 +193,12 @@ namespace impm
              ((1. + nu) * (1. - 2. * nu));
     }
 
+    double
+    shear_modulus() const override
+    {
+      return mu;
+    }
+
     SymmetricTensor<2, 3>
     elastic_strain_for_stress(
       const SymmetricTensor<2, 3> &kirchhoff_stress) const override

@@ -318,6 +318,17 @@ namespace impm
     p_wave_modulus() const = 0;
 
     /**
+     * @brief The shear modulus @f$\mu@f$ of the elastic law (a
+     * pressure-dependent law's at its reference state), for the elastic
+     * stiffness of a stiffness-proportional damping (StiffnessDamping). The
+     * default finds it from elastic_modulus() and p_wave_modulus(), the
+     * smaller root of @f$4\mu^2 - (3M + E)\mu + EM = 0@f$ (the other root
+     * is a negative Poisson's ratio); a model that knows it says it.
+     */
+    virtual double
+    shear_modulus() const;
+
+    /**
      * @brief The same model with its strength divided by @p factor (> 0),
      * for a strength reduction (StrengthReduction): the cohesion, the
      * tangents of the friction and dilation angles, a yield stress or a
@@ -452,7 +463,7 @@ namespace impm
 
     /** @brief The shear modulus mu. */
     double
-    shear_modulus() const
+    shear_modulus() const override
     {
       return mu;
     }

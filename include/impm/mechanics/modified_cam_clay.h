@@ -250,6 +250,13 @@ namespace impm
     double
     p_wave_modulus() const override;
 
+    /** @brief The constant shear modulus. */
+    double
+    shear_modulus() const override
+    {
+      return mu;
+    }
+
     /**
      * @brief The return map in principal stresses from the trial
      * logarithmic strains @p trial_strain and @f$p_{c,n}@f$.

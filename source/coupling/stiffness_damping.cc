@@ -1,0 +1,221 @@
+// The stiffness-proportional part of Rayleigh damping: a viscous stress
+// of the elastic moduli and the nodal velocity's rate of strain.
+#include <impm/core/point_properties.h>
+#include <impm/coupling/stiffness_damping.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+namespace impm
+{
+  template <int dim>
+  StiffnessDamping<dim>::StiffnessDamping(const TimeIntegrator &integrator)
+    : coefficient(integrator.stiffness_damping)
+    , gamma_over_beta(
+        integrator.is_explicit() ? 0. : integrator.gamma / integrator.beta)
+    , k_r(integrator.alpha_f / (1. - integrator.alpha_f))
+  {}
+
+
+
+  template <int dim>
+  double
+  StiffnessDamping<dim>::critical_time_step(const double undamped_step) const
+  {
+    const double zeta = coefficient / undamped_step;
+    return undamped_step * (std::sqrt(1. + zeta * zeta) - zeta);
+  }
+
+
+
+  template <int dim>
+  double
+  StiffnessDamping<dim>::add_force(const MaterialPoints<dim> &material_points,
+                                   const LoadStepSystem<dim> &system,
+                                   const std::vector<double> &nodal_velocity,
+                                   NodalVector               &force) const
+  {
+    const bool axisymmetric = system.axisymmetric();
+    double     squares      = 0.;
+    for (const auto &point : material_points.particles())
+      {
+        const PointStep<dim> &step = system.point_steps.of(point);
+        const auto           &s    = step.support;
+        Tensor<2, dim>        rate; // the velocity's gradient
+        double                hoop_rate = 0.;
+        for (unsigned int v = 0; v < s.n_nodes; ++v)
+          {
+            for (unsigned int i = 0; i < dim; ++i)
+              rate[i] +=
+                nodal_velocity[step.dofs[v * dim + i]] * s.gradients[v];
+            if (axisymmetric)
+              hoop_rate +=
+                s.hoop_weights[v] * nodal_velocity[step.dofs[v * dim]];
+          }
+        const double scale =
+          coefficient * PointState<dim>(point.get_properties()).volume();
+        const double mu          = step.material->shear_modulus();
+        const double lambda      = step.material->p_wave_modulus() - 2. * mu;
+        const double volume_rate = trace(rate) + hoop_rate;
+        // V sigma_d = beta_R V (lambda tr I + 2 mu sym(L))
+        Tensor<2, dim> stress = scale * mu * (rate + transpose(rate));
+        for (unsigned int i = 0; i < dim; ++i)
+          stress[i][i] += scale * lambda * volume_rate;
+        const double hoop_stress =
+          scale * (lambda * volume_rate + 2. * mu * hoop_rate);
+        for (unsigned int v = 0; v < s.n_nodes; ++v)
+          {
+            const Tensor<1, dim> f = stress * s.gradients[v];
+            for (unsigned int i = 0; i < dim; ++i)
+              force.local_element(step.dofs[v * dim + i]) += f[i];
+            if (axisymmetric)
+              force.local_element(step.dofs[v * dim]) +=
+                hoop_stress * s.hoop_weights[v];
+            squares += f.norm_square();
+          }
+      }
+    return squares;
+  }
+
+
+
+  template <int dim>
+  double
+  StiffnessDamping<dim>::add_implicit_forces(
+    const NodalMomentum<dim>  &nodes,
+    const MaterialPoints<dim> &material_points,
+    const LoadStepSystem<dim> &system,
+    const NodalVector         &increment,
+    const double               time_step,
+    NodalVector               &internal_force)
+  {
+    velocity.resize(nodes.n_local());
+    for (unsigned int i = 0; i < nodes.n_local(); ++i)
+      {
+        const double du = increment.local_element(i);
+        const double m  = nodes.mass(i);
+        if (!nodes.in_system(i) || !(m > 0.))
+          {
+            velocity[i] = (1. + k_r) * du / time_step;
+            continue;
+          }
+        // With a^{n+1} from the Newmark relation, v^{n+1} = v + dt ((1 -
+        // gamma) a + gamma a^{n+1}) = (gamma/beta) du/dt + (1 -
+        // gamma/beta) v + dt (1 - gamma/(2 beta)) a.
+        const double v = nodes.momentum(i) / m;
+        const double a = nodes.mass_acceleration(i) / m;
+        velocity[i]    = gamma_over_beta * du / time_step +
+                      (1. - gamma_over_beta) * v +
+                      time_step * (1. - 0.5 * gamma_over_beta) * a + k_r * v;
+      }
+    return add_force(material_points, system, velocity, internal_force);
+  }
+
+
+
+  template <int dim>
+  void
+  StiffnessDamping<dim>::add_implicit_matrix(
+    const MaterialPoints<dim>      &material_points,
+    const LoadStepSystem<dim>      &system,
+    const double                    time_step,
+    TrilinosWrappers::SparseMatrix &matrix)
+  {
+    const bool   axisymmetric = system.axisymmetric();
+    const double factor       = coefficient * gamma_over_beta / time_step;
+    const auto  &steps        = system.point_steps;
+    volumes.resize(steps.size());
+    for (const auto &point : material_points.particles())
+      volumes[steps.index_of(point)] =
+        PointState<dim>(point.get_properties()).volume();
+    // One dense block per assembly group (the points that share a support,
+    // LoadStepSystem::assembly_groups): K_(vi)(wk) = V (lambda b_vi b_wk +
+    // mu (delta_ik g_v.g_w + g_vk g_wi) + 2 mu delta_i0 delta_k0 h_v h_w),
+    // b_vi = g_vi + delta_i0 h_v (h the hoop weights, axisymmetry only).
+    std::array<unsigned int, PointSupport<dim>::max_nodes> position;
+    for (const AssemblyGroup &group : system.assembly_groups)
+      {
+        const unsigned int n = group.n_nodes * dim;
+        block.assign(n * n, 0.);
+        const unsigned char *node_positions = group.node_positions.data();
+        for (const unsigned int p : group.points)
+          {
+            const PointStep<dim> &step = steps[p];
+            const auto           &s    = step.support;
+            for (unsigned int v = 0; v < s.n_nodes; ++v)
+              position[v] =
+                group.node_positions.empty() ? v : *node_positions++;
+            const double scale = factor * volumes[p];
+            const double mu    = scale * step.material->shear_modulus();
+            const double lambda =
+              scale * step.material->p_wave_modulus() - 2. * mu;
+            for (unsigned int v = 0; v < s.n_nodes; ++v)
+              for (unsigned int w = 0; w < s.n_nodes; ++w)
+                {
+                  const Tensor<1, dim> &g_v = s.gradients[v],
+                                       &g_w = s.gradients[w];
+                  const double h_v = axisymmetric ? s.hoop_weights[v] : 0.;
+                  const double h_w = axisymmetric ? s.hoop_weights[w] : 0.;
+                  const double gg  = mu * (g_v * g_w);
+                  for (unsigned int i = 0; i < dim; ++i)
+                    {
+                      double *row =
+                        &block[(position[v] * dim + i) * n + position[w] * dim];
+                      const double b_vi = g_v[i] + (i == 0 ? h_v : 0.);
+                      for (unsigned int k = 0; k < dim; ++k)
+                        row[k] +=
+                          lambda * b_vi * (g_w[k] + (k == 0 ? h_w : 0.)) +
+                          mu * g_v[k] * g_w[i] + (i == k ? gg : 0.);
+                      if (i == 0)
+                        row[0] += 2. * mu * h_v * h_w;
+                    }
+                }
+          }
+        const unsigned int n_rows = group.rows.size();
+        row_offsets.resize(n_rows);
+        column_offsets.resize(n_rows);
+        for (unsigned int a = 0; a < n_rows; ++a)
+          {
+            row_offsets[a]    = group.local[a] * n;
+            column_offsets[a] = group.local[a];
+          }
+        block_adder.add(group.rows.data(),
+                        n_rows,
+                        StoredBlock{block.data(),
+                                    row_offsets.data(),
+                                    column_offsets.data()},
+                        matrix,
+                        system.off_process_rows);
+      }
+  }
+
+
+
+  template <int dim>
+  const NodalVector &
+  StiffnessDamping<dim>::damped_residual(
+    const NodalMomentum<dim>  &nodes,
+    const MaterialPoints<dim> &material_points,
+    const LoadStepSystem<dim> &system,
+    const NodalVector         &residual)
+  {
+    velocity.resize(nodes.n_local());
+    for (unsigned int i = 0; i < nodes.n_local(); ++i)
+      velocity[i] = nodes.in_system(i) && nodes.mass(i) > 0. ?
+                      nodes.momentum(i) / nodes.mass(i) :
+                      0.;
+    residual_with_damping.reinit(residual);
+    add_force(material_points, system, velocity, residual_with_damping);
+    residual_with_damping.compress(VectorOperation::add);
+    residual_with_damping.add(1., residual);
+    residual_with_damping.update_ghost_values();
+    return residual_with_damping;
+  }
+
+
+
+  template class StiffnessDamping<2>;
+  template class StiffnessDamping<3>;
+} // namespace impm
