@@ -120,6 +120,7 @@ namespace impm
                 admissible = false;
                 continue;
               }
+            step.material_hoop_increment = step.hoop_increment;
           }
         // Without a coupling that sets the volumes each point is updated
         // at once; with it, through the coupling once every increment is
@@ -350,7 +351,10 @@ namespace impm
                     Form::force_stress(step.update,
                                        step.deformation_increment_inverse,
                                        step.initial_volume),
-                    gradient_map(p));
+                    gradient_map(p),
+                    axisymmetric ? &hoop : nullptr,
+                    step.update.kirchhoff_stress[2][2] / step.hoop_increment *
+                      step.initial_volume);
                 const Tensor<1, dim> *gradients = this->gradients(p);
                 const double         *weights_over_radius =
                   step.support.hoop_weights.data();

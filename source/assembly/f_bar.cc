@@ -311,6 +311,15 @@ namespace impm
   void
   FBar<dim>::average(PointSteps<dim> &point_steps)
   {
+    // In axisymmetry the volume change holds the hoop stretch, and the
+    // material's hoop stretch takes its share of the scaling.
+    const bool axisymmetric = grid.cartesian().axisymmetric;
+    if (axisymmetric)
+      {
+        hoop_stretch.resize(point_steps.size());
+        dilatation_hoop_stress.resize(point_steps.size());
+      }
+    const double exponent = 1. / n_volume_directions();
     for (unsigned int patch = 0; patch < mean_jacobian.size(); ++patch)
       {
         double mean = 0.;
@@ -319,15 +328,23 @@ namespace impm
           {
             const unsigned int p = patch_points[c];
             jacobian[p] = determinant(point_steps[p].deformation_increment);
+            if (axisymmetric)
+              {
+                hoop_stretch[p] = point_steps[p].hoop_increment;
+                jacobian[p] *= hoop_stretch[p];
+              }
             mean += volume_share[p] * jacobian[p];
           }
         mean_jacobian[patch] = mean;
         for (unsigned int c = patch_start[patch]; c < patch_start[patch + 1];
              ++c)
           {
-            const unsigned int p = patch_points[c];
-            point_steps[p].deformation_increment *=
-              std::pow(mean / jacobian[p], 1. / dim);
+            const unsigned int p       = patch_points[c];
+            const double       scaling = std::pow(mean / jacobian[p], exponent);
+            point_steps[p].deformation_increment *= scaling;
+            if (axisymmetric)
+              point_steps[p].material_hoop_increment =
+                scaling * hoop_stretch[p];
           }
       }
   }
@@ -499,7 +516,9 @@ namespace impm
   FBar<dim>::point_tangent(const unsigned int    p,
                            const Tensor<4, dim> &tangent,
                            const Tensor<2, dim> &force_stress,
-                           const Tensor<2, dim> &gradient_map)
+                           const Tensor<2, dim> &gradient_map,
+                           HoopTangent<dim>     *hoop,
+                           const double          hoop_force_stress)
   {
     // D = A : R + S with R the inverse of the gradient map: the response
     // to a uniform dilatation of the current configuration, d(dF) = e dF.
@@ -510,6 +529,27 @@ namespace impm
         for (unsigned int k = 0; k < dim; ++k)
           for (unsigned int q = 0; q < dim; ++q)
             D[i][j] += tangent[i][j][k][q] * reference[k][q];
+    const double d = n_volume_directions();
+    if (hoop != nullptr)
+      {
+        // The dilatation stretches the hoop too (d(dF_tt) = e dF_tt): the
+        // in-plane stress's share, and the hoop force's response D_t (its
+        // geometric part, -tau_tt V0 / dF_tt per unit e, cancelled). The
+        // hoop tangent gains the F-bar terms of its row and column.
+        const double h = hoop_stretch[p];
+        D += hoop->in_plane_by_hoop * h;
+        double hoop_response = hoop->hoop_by_hoop * h + hoop_force_stress;
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int q = 0; q < dim; ++q)
+            hoop_response += hoop->hoop_by_in_plane[k][q] * reference[k][q];
+        dilatation_hoop_stress[p] = hoop_response;
+        hoop->in_plane_by_hoop -= D / (d * h);
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int q = 0; q < dim; ++q)
+            hoop->hoop_by_in_plane[k][q] -=
+              hoop_response * gradient_map[q][k] / d;
+        hoop->hoop_by_hoop -= hoop_response / (d * h);
+      }
     dilatation_stress[p] = D;
     // With pressure unknowns the point's volume also follows the
     // isochoric part of the perturbation: d ln dJ* = -(t~ : G) / k.
@@ -525,7 +565,7 @@ namespace impm
       for (unsigned int j = 0; j < dim; ++j)
         for (unsigned int k = 0; k < dim; ++k)
           for (unsigned int q = 0; q < dim; ++q)
-            corrected[i][j][k][q] -= D[i][j] * map[q][k] / dim;
+            corrected[i][j][k][q] -= D[i][j] * map[q][k] / d;
     return corrected;
   }
 

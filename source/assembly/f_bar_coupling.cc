@@ -17,7 +17,8 @@ namespace impm
            inputs.parameters.material_points.cell_pressure_unknowns,
            inputs.parameters.material_points.pressure_jump_stabilisation)
   {
-    inputs.refuse_axisymmetry("Material points/F-bar");
+    if (has_pressure_unknowns())
+      inputs.refuse_axisymmetry("Material points/Cell pressure unknowns");
   }
 
 

@@ -162,7 +162,9 @@ namespace impm
   Coupling<dim>::point_tangent(const unsigned int,
                                const Tensor<4, dim> &tangent,
                                const Tensor<2, dim> &,
-                               const Tensor<2, dim> &)
+                               const Tensor<2, dim> &,
+                               HoopTangent<dim> *,
+                               const double)
   {
     return tangent;
   }

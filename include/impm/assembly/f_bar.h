@@ -36,7 +36,10 @@ namespace impm
    *   \Delta F_p, \qquad
    *   \Delta\bar J = \frac{\sum_q \Delta J_q V_q^n}{\sum_q V_q^n},
    * @f]
-   * (d = 2 in plane strain: the out-of-plane stretch stays one). The
+   * (d = 2 in plane strain: the out-of-plane stretch stays one; d = 3 in
+   * axisymmetry, where @f$\Delta J_p@f$ holds the hoop stretch
+   * @f$\Delta F_{\theta\theta}@f$ and the material's hoop stretch is
+   * scaled with the in-plane increment). The
    * material sees @f$\Delta\bar F_p@f$, the point's deformation gradient
    * accumulates it (so the points of a patch keep the patch's true volume),
    * and the equilibrium maps the gradients with the true @f$\Delta F_p@f$:
@@ -51,7 +54,14 @@ namespace impm
    * S_{vp})_i@f$, @f$b_{wk} = \sum_q \frac{V_q^n}{\sum V^n} \Delta J_q
    * (\nabla_x S_{wq})_k@f$ and @f$D_p = V^0\,(\mathcal C : I)\,\Delta
    * F^{-T}@f$ the stress response to a uniform dilatation (see
-   * doc/formulation.md, "F-bar", for the derivation).
+   * doc/formulation.md, "F-bar", for the derivation). In axisymmetry
+   * @f$D_p@f$ gains the hoop row @f$D_{\theta,p}@f$ (the hoop force's
+   * response to a uniform dilatation), @f$a_{v0}@f$ the term @f$\bar
+   * N_{\theta,v} D_{\theta}@f$ and @f$b_{w0}@f$ the term @f$\Delta J_q
+   * \bar N_{\theta,w} / \Delta F_{\theta\theta}@f$, with the hoop
+   * weights @f$\bar N_\theta@f$; the point's hoop tangent
+   * (HoopTangent) gains the per-point term. Cell pressure unknowns are not
+   * yet formulated in axisymmetry (refused).
    *
    * <b>Cell pressure unknowns</b> (`Material points/Cell pressure
    * unknowns`). Plain F-bar gives the points of a patch one volume change,
@@ -280,12 +290,18 @@ namespace impm
      * @param gradient_map @f$R^{-1}@f$: what maps the statement's
      *   gradients to the current configuration (@f$\Delta F^{-1}@f$ for
      *   start-of-step gradients, the identity for mapped ones).
+     * @param hoop Axisymmetry: the hoop tangent, which gains the F-bar
+     *   terms of the hoop row and column (d = 3); nullptr otherwise.
+     * @param hoop_force_stress Axisymmetry: @f$\tau_{\theta\theta} V^0 /
+     *   \Delta F_{\theta\theta}@f$.
      */
     Tensor<4, dim>
     point_tangent(const unsigned int    p,
                   const Tensor<4, dim> &tangent,
                   const Tensor<2, dim> &force_stress,
-                  const Tensor<2, dim> &gradient_map) override;
+                  const Tensor<2, dim> &gradient_map,
+                  HoopTangent<dim>     *hoop,
+                  const double          hoop_force_stress) override;
 
     /**
      * @brief Add every patch's coupling block to @p matrix.
@@ -396,6 +412,16 @@ namespace impm
     std::vector<double> mean_jacobian;
     /** Per point: D of the last point_tangent(). */
     std::vector<Tensor<2, dim>> dilatation_stress;
+    /** Per point, axisymmetry only: the true hoop stretch of the last
+     *  average() and the hoop row of D of the last point_tangent(). */
+    std::vector<double> hoop_stretch, dilatation_hoop_stress;
+    /** @brief The directions a patch's volume change is shared among:
+     *  dim, or 3 in axisymmetry (the hoop). */
+    unsigned int
+    n_volume_directions() const
+    {
+      return grid.cartesian().axisymmetric ? 3 : dim;
+    }
     /** Per local DoF: its position in the current patch, or -1. */
     std::vector<int> position_in_patch;
     /** The vectors a and b of the current patch. */
@@ -442,8 +468,14 @@ namespace impm
             const double          weight = volume_share[p] * jacobian[p];
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               {
-                const Tensor<1, dim> stress_part = dilatation_stress[p] * g[v];
-                const Tensor<1, dim> spatial     = g[v] * map;
+                Tensor<1, dim> stress_part = dilatation_stress[p] * g[v];
+                Tensor<1, dim> spatial     = g[v] * map;
+                if (!hoop_stretch.empty()) // the hoop row and column
+                  {
+                    const double h_v = step.support.hoop_weights[v];
+                    stress_part[0] += h_v * dilatation_hoop_stress[p];
+                    spatial[0] += h_v / hoop_stretch[p];
+                  }
                 for (unsigned int i = 0; i < dim; ++i)
                   {
                     const int position =
@@ -457,7 +489,8 @@ namespace impm
           }
         for (unsigned int k = 0; k < n_dofs; ++k)
           position_in_patch[patch_dofs[first_dof + k]] = -1;
-        const double coefficient = 1. / (dim * mean_jacobian[patch]);
+        const double coefficient =
+          1. / (n_volume_directions() * mean_jacobian[patch]);
         block_adder.add(
           patch_system_indices.data() + first_dof,
           n_dofs,

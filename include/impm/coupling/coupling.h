@@ -18,6 +18,7 @@
 #include <impm/coupling/step_refusal.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
+#include <impm/mechanics/pulled_back_stress.h>
 #include <impm/points/material_points.h>
 #include <impm/points/point_step.h>
 #include <impm/system/load_step_system.h>
@@ -280,12 +281,19 @@ namespace impm
      * @param tangent The statement's tangent (times volume).
      * @param force_stress The statement's force stress (times volume).
      * @param gradient_map As PointGradients::gradient_map().
+     * @param hoop In axisymmetry the point's hoop entries of the tangent
+     *   (times volume), which the coupling may change too; nullptr in
+     *   plane strain and 3D.
+     * @param hoop_force_stress In axisymmetry the hoop force's stress,
+     *   @f$\tau_{\theta\theta} V^0 / \Delta F_{\theta\theta}@f$.
      */
     virtual Tensor<4, dim>
     point_tangent(const unsigned int    p,
                   const Tensor<4, dim> &tangent,
                   const Tensor<2, dim> &force_stress,
-                  const Tensor<2, dim> &gradient_map);
+                  const Tensor<2, dim> &gradient_map,
+                  HoopTangent<dim>     *hoop,
+                  const double          hoop_force_stress);
 
     /**
      * @brief Add this coupling's force on the material, with the sign of an

@@ -43,8 +43,13 @@ namespace impm
     /** Axisymmetry only: the hoop stretch of the current iterate,
      *  @f$\Delta F_{\theta\theta} = 1 + \sum_v \bar N_{\theta,v}
      *  \Delta u_{v,r}@f$, the average of @f$1 + \Delta u_r / r^n@f$ over
-     *  the point's ring (1 otherwise). */
+     *  the point's ring (1 otherwise). It maps the hoop force as
+     *  deformation_increment_inverse maps the gradients. */
     double hoop_increment = 1.;
+    /** Axisymmetry only: the hoop stretch the material sees,
+     *  hoop_increment, or with F-bar its share of the patch's volume change
+     *  (FBar; 1 otherwise). */
+    double material_hoop_increment = 1.;
     /** Initial volume @f$V_p^0@f$ (in axisymmetry that of its ring). */
     double initial_volume;
     /** The point's material (of its body). */
@@ -75,7 +80,8 @@ namespace impm
 
     /**
      * @brief The increment the material sees, 3x3: deformation_increment
-     * with the out-of-plane stretch hoop_increment (1 in plane strain).
+     * with the out-of-plane stretch material_hoop_increment (1 in plane
+     * strain).
      */
     Tensor<2, 3>
     full_deformation_increment() const
@@ -85,7 +91,7 @@ namespace impm
         for (unsigned int j = 0; j < dim; ++j)
           full[i][j] = deformation_increment[i][j];
       if constexpr (dim == 2)
-        full[2][2] = hoop_increment;
+        full[2][2] = material_hoop_increment;
       return full;
     }
   };
