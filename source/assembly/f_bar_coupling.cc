@@ -93,12 +93,10 @@ namespace impm
                         const LoadStepSystem<dim>      &system,
                         TrilinosWrappers::SparseMatrix &matrix)
   {
-    add_patch_stiffness(
-      system.point_steps,
-      [&](const unsigned int p) { return gradients.gradients(p); },
-      [&](const unsigned int p) { return gradients.gradient_map(p); },
-      matrix,
-      system.off_process_rows);
+    add_patch_stiffness(system.point_steps,
+                        gradients,
+                        matrix,
+                        system.off_process_rows);
     return false;
   }
 

@@ -353,7 +353,11 @@ namespace impm
       const auto &grid = parameters.grid;
       for (unsigned int component = 0; component < dim; ++component)
         {
-          bool held = held_elsewhere(component);
+          // In axisymmetry a radial translation stretches the rings: their
+          // hoop stiffness holds the material radially (a hollow cylinder
+          // needs no radial support).
+          bool held =
+            held_elsewhere(component) || (grid.axisymmetric && component == 0);
           for (unsigned int f = 0; f < 2 * dim && !held; ++f)
             held =
               Parameters::constrains(grid.face_conditions[f], f, component) &&

@@ -14,6 +14,7 @@
 #include <impm/base/plugin_list.h>
 #include <impm/core/load_path.h>
 #include <impm/core/parameters.h>
+#include <impm/coupling/coupling_inputs.h>
 #include <impm/coupling/step_measure.h>
 #include <impm/coupling/step_refusal.h>
 #include <impm/grid/background_grid.h>
@@ -281,11 +282,10 @@ namespace impm
      * @param tangent The statement's tangent (times volume).
      * @param force_stress The statement's force stress (times volume).
      * @param gradient_map As PointGradients::gradient_map().
-     * @param hoop In axisymmetry the point's hoop entries of the tangent
-     *   (times volume), which the coupling may change too; nullptr in
-     *   plane strain and 3D.
-     * @param hoop_force_stress In axisymmetry the hoop force's stress,
-     *   @f$\tau_{\theta\theta} V^0 / \Delta F_{\theta\theta}@f$.
+     * @param hoop Axisymmetry: the point's hoop entries of the tangent
+     *   (times volume), which it may change too; nullptr otherwise.
+     * @param hoop_force_stress Axisymmetry: @f$\tau_{\theta\theta} V^0 /
+     *   \Delta F_{\theta\theta}@f$.
      */
     virtual Tensor<4, dim>
     point_tangent(const unsigned int    p,
@@ -446,31 +446,6 @@ namespace impm
     step_measures(const double              load_factor,
                   std::vector<StepMeasure> &measures) const;
     /** @} */
-  };
-
-  /**
-   * @brief What a coupling is created from: the scene, its parameter file
-   * (for couplings that declare their own subsection) and the grid.
-   */
-  template <int dim>
-  struct CouplingInputs
-  {
-    /** The scene. */
-    const Parameters::All<dim> &parameters;
-    /** The scene's parameter file. */
-    ParameterHandler &prm;
-    /** The background grid. */
-    const BackgroundGrid<dim> &grid;
-    /** The scene's time (subsection `Time`). */
-    const Parameters::Time &time;
-    /** The acceleration applied in full from the first step (an unramped
-     *  gravity): the load at load factor 0. */
-    Tensor<1, dim> acceleration_from_the_start;
-
-    /** @brief Refuse an axisymmetric scene, naming @p coupling (one not
-     *  yet formulated with the ring's 2 pi r). */
-    void
-    refuse_axisymmetry(const std::string &coupling) const;
   };
 
   /**
