@@ -170,14 +170,20 @@ namespace impm
         const auto tau =
           PointState<dim>(point.get_properties()).kirchhoff_stress();
         double sum = 0.;
-        for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int i = 0; i < n_volume_directions(); ++i)
           sum += tau[i][i];
-        start_stress[point_steps.index_of(point)] = sum / dim;
+        start_stress[point_steps.index_of(point)] = sum / n_volume_directions();
       }
     log_volume.assign(n_points, 0.);
     point_volume.assign(n_points, 1.);
     bulk_response.assign(n_points, 1.);
     pressure_response.assign(n_points, Tensor<2, dim>());
+    pressure_hoop_response.assign(n_points, 0.);
+    if (grid.cartesian().axisymmetric)
+      {
+        hoop_stretch.assign(n_points, 1.);
+        dilatation_hoop_stress.assign(n_points, 0.);
+      }
 
     // Each cell's patches: (body, pressure unknown), for this process's
     // cells and, from their owners, for the ghost cells.
@@ -362,6 +368,10 @@ namespace impm
     // an apex), steps of at most 5 % of volume.
     constexpr unsigned int max_iterations = 30;
     Tensor<4, 3>           C;
+    // In axisymmetry the mean stress and the volume are three-dimensional
+    // (the hoop's share), as in average().
+    const bool         axisymmetric = grid.cartesian().axisymmetric;
+    const unsigned int d            = n_volume_directions();
     for (unsigned int patch = 0; patch < mean_jacobian.size(); ++patch)
       {
         const double target = pressure[patch];
@@ -381,36 +391,48 @@ namespace impm
             PointStep<dim>      &step           = point_steps[p];
             const Tensor<2, dim> true_increment = step.deformation_increment;
             jacobian[p]                         = determinant(true_increment);
-            const double log_jacobian           = std::log(jacobian[p]);
-            double      &lambda                 = log_volume[p];
-            bool         converged              = false;
-            double       residual               = 0.;
+            if (axisymmetric)
+              {
+                hoop_stretch[p] = step.hoop_increment;
+                jacobian[p] *= hoop_stretch[p];
+              }
+            const double log_jacobian = std::log(jacobian[p]);
+            double      &lambda       = log_volume[p];
+            bool         converged    = false;
+            double       residual     = 0.;
             for (unsigned int iteration = 0; iteration < max_iterations;
                  ++iteration)
               {
-                step.deformation_increment =
-                  true_increment * std::exp((lambda - log_jacobian) / dim);
+                const double scaling = std::exp((lambda - log_jacobian) / d);
+                step.deformation_increment = true_increment * scaling;
+                if (axisymmetric)
+                  step.material_hoop_increment = scaling * hoop_stretch[p];
                 if (!update_point(p))
                   return false;
                 const auto &tau = step.update.kirchhoff_stress;
                 double      sum = 0.;
-                for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int i = 0; i < d; ++i)
                   sum += tau[i][i];
-                residual = sum / dim - target;
-                step.material->tangent(step.update, dim, C);
+                residual = sum / d - target;
+                step.material->tangent(step.update, d, C);
+                // t_kl = (1/d) sum_i C_iikl (k, l in the plane, and the
+                // hoop's t_tt), its mean k and its isochoric part t~.
                 Tensor<2, dim> t;
-                for (unsigned int k = 0; k < dim; ++k)
-                  for (unsigned int l = 0; l < dim; ++l)
-                    {
-                      for (unsigned int i = 0; i < dim; ++i)
-                        t[k][l] += C[i][i][k][l];
-                      t[k][l] /= dim;
-                    }
-                const double slope = trace(t) / dim;
+                double         t_hoop = 0.;
+                for (unsigned int i = 0; i < d; ++i)
+                  {
+                    for (unsigned int k = 0; k < dim; ++k)
+                      for (unsigned int l = 0; l < dim; ++l)
+                        t[k][l] += C[i][i][k][l] / d;
+                    if (axisymmetric)
+                      t_hoop += C[i][i][2][2] / d;
+                  }
+                const double slope = (trace(t) + t_hoop) / d;
                 for (unsigned int k = 0; k < dim; ++k)
                   t[k][k] -= slope;
                 bulk_response[p]     = std::max(slope, 1e-8 * modulus[patch]);
                 pressure_response[p] = t;
+                pressure_hoop_response[p] = axisymmetric ? t_hoop - slope : 0.;
                 // lambda stays the one just evaluated when the loop ends.
                 const double step_length =
                   -residual /
@@ -507,66 +529,6 @@ namespace impm
       residuals[patch] = {pressure_index[patch],
                           pressure_rows[pressure_index[patch]]};
     return residuals;
-  }
-
-
-
-  template <int dim>
-  Tensor<4, dim>
-  FBar<dim>::point_tangent(const unsigned int    p,
-                           const Tensor<4, dim> &tangent,
-                           const Tensor<2, dim> &force_stress,
-                           const Tensor<2, dim> &gradient_map,
-                           HoopTangent<dim>     *hoop,
-                           const double          hoop_force_stress)
-  {
-    // D = A : R + S with R the inverse of the gradient map: the response
-    // to a uniform dilatation of the current configuration, d(dF) = e dF.
-    const Tensor<2, dim> reference = invert(gradient_map);
-    Tensor<2, dim>       D         = force_stress;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int q = 0; q < dim; ++q)
-            D[i][j] += tangent[i][j][k][q] * reference[k][q];
-    const double d = n_volume_directions();
-    if (hoop != nullptr)
-      {
-        // The dilatation stretches the hoop too (d(dF_tt) = e dF_tt): the
-        // in-plane stress's share, and the hoop force's response D_t (its
-        // geometric part, -tau_tt V0 / dF_tt per unit e, cancelled). The
-        // hoop tangent gains the F-bar terms of its row and column.
-        const double h = hoop_stretch[p];
-        D += hoop->in_plane_by_hoop * h;
-        double hoop_response = hoop->hoop_by_hoop * h + hoop_force_stress;
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int q = 0; q < dim; ++q)
-            hoop_response += hoop->hoop_by_in_plane[k][q] * reference[k][q];
-        dilatation_hoop_stress[p] = hoop_response;
-        hoop->in_plane_by_hoop -= D / (d * h);
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int q = 0; q < dim; ++q)
-            hoop->hoop_by_in_plane[k][q] -=
-              hoop_response * gradient_map[q][k] / d;
-        hoop->hoop_by_hoop -= hoop_response / (d * h);
-      }
-    dilatation_stress[p] = D;
-    // With pressure unknowns the point's volume also follows the
-    // isochoric part of the perturbation: d ln dJ* = -(t~ : G) / k.
-    Tensor<2, dim> map = gradient_map;
-    if (has_pressure_unknowns())
-      for (unsigned int q = 0; q < dim; ++q)
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int l = 0; l < dim; ++l)
-            map[q][k] += pressure_response[p][k][l] * gradient_map[q][l] /
-                         bulk_response[p];
-    Tensor<4, dim> corrected = tangent;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int q = 0; q < dim; ++q)
-            corrected[i][j][k][q] -= D[i][j] * map[q][k] / d;
-    return corrected;
   }
 
 

@@ -17,8 +17,6 @@ namespace impm
            inputs.parameters.material_points.cell_pressure_unknowns,
            inputs.parameters.material_points.pressure_jump_stabilisation)
   {
-    if (has_pressure_unknowns())
-      inputs.refuse_axisymmetry("Material points/Cell pressure unknowns");
   }
 
 

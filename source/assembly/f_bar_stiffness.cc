@@ -1,4 +1,5 @@
-// F-bar's coupling blocks of the system matrix (FBar::add_patch_stiffness):
+// F-bar's part of the system matrix: each point's tangent with its F-bar
+// term (FBar::point_tangent) and the coupling blocks (add_patch_stiffness):
 // the rank-one block of each patch, or with cell pressure unknowns each
 // patch's block over its DoFs and its pressure and the pressure-jump
 // stabilisation's. The patches, their volumes and pressures are in
@@ -9,6 +10,75 @@
 
 namespace impm
 {
+  template <int dim>
+  Tensor<4, dim>
+  FBar<dim>::point_tangent(const unsigned int    p,
+                           const Tensor<4, dim> &tangent,
+                           const Tensor<2, dim> &force_stress,
+                           const Tensor<2, dim> &gradient_map,
+                           HoopTangent<dim>     *hoop,
+                           const double          hoop_force_stress)
+  {
+    // D = A : R + S with R the inverse of the gradient map: the response
+    // to a uniform dilatation of the current configuration, d(dF) = e dF.
+    const Tensor<2, dim> reference = invert(gradient_map);
+    Tensor<2, dim>       D         = force_stress;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int q = 0; q < dim; ++q)
+            D[i][j] += tangent[i][j][k][q] * reference[k][q];
+    const double d = n_volume_directions();
+    if (hoop != nullptr)
+      {
+        // The dilatation stretches the hoop too (d(dF_tt) = e dF_tt): the
+        // in-plane stress's share, and the hoop force's response D_t (its
+        // geometric part, -tau_tt V0 / dF_tt per unit e, cancelled). The
+        // hoop tangent gains the F-bar terms of its row and column.
+        const double h = hoop_stretch[p];
+        D += hoop->in_plane_by_hoop * h;
+        double hoop_response = hoop->hoop_by_hoop * h + hoop_force_stress;
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int q = 0; q < dim; ++q)
+            hoop_response += hoop->hoop_by_in_plane[k][q] * reference[k][q];
+        dilatation_hoop_stress[p] = hoop_response;
+      }
+    dilatation_stress[p] = D;
+    // With pressure unknowns the point's volume also follows the
+    // isochoric part of the perturbation: d ln dJ* = -(t~ : G) / k, G
+    // with its hoop part dF_tt / dF_tt.
+    Tensor<2, dim> map        = gradient_map;
+    double         hoop_share = 1.; // the hoop column's, over dF_tt
+    if (has_pressure_unknowns())
+      {
+        for (unsigned int q = 0; q < dim; ++q)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = 0; l < dim; ++l)
+              map[q][k] += pressure_response[p][k][l] * gradient_map[q][l] /
+                           bulk_response[p];
+        hoop_share += pressure_hoop_response[p] / bulk_response[p];
+      }
+    if (hoop != nullptr)
+      {
+        const double h             = hoop_stretch[p];
+        const double hoop_response = dilatation_hoop_stress[p];
+        hoop->in_plane_by_hoop -= D * (hoop_share / (d * h));
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int q = 0; q < dim; ++q)
+            hoop->hoop_by_in_plane[k][q] -= hoop_response * map[q][k] / d;
+        hoop->hoop_by_hoop -= hoop_response * hoop_share / (d * h);
+      }
+    Tensor<4, dim> corrected = tangent;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int q = 0; q < dim; ++q)
+            corrected[i][j][k][q] -= D[i][j] * map[q][k] / d;
+    return corrected;
+  }
+
+
+
   template <int dim>
   void
   FBar<dim>::add_patch_stiffness(const PointSteps<dim>          &point_steps,
@@ -111,16 +181,24 @@ namespace impm
             corner += volume_share[p] * point_volume[p] / k;
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               {
-                const Tensor<1, dim> stress_part = dilatation_stress[p] * g[v];
-                const Tensor<1, dim> spatial     = g[v] * map;
-                const Tensor<1, dim> isochoric = pressure_response[p] * spatial;
+                Tensor<1, dim> stress_part = dilatation_stress[p] * g[v];
+                Tensor<1, dim> spatial     = g[v] * map;
+                Tensor<1, dim> isochoric   = pressure_response[p] * spatial;
+                if (!hoop_stretch.empty()) // the hoop row and column
+                  {
+                    const double h_v = step.support.hoop_weights[v];
+                    stress_part[0] += h_v * dilatation_hoop_stress[p];
+                    spatial[0] += h_v / hoop_stretch[p];
+                    isochoric[0] +=
+                      pressure_hoop_response[p] * h_v / hoop_stretch[p];
+                  }
                 for (unsigned int i = 0; i < dim; ++i)
                   {
                     const int position =
                       position_in_patch[step.dofs[v * dim + i]];
                     if (position < 0)
                       continue;
-                    a[position] += stress_part[i] / (dim * k);
+                    a[position] += stress_part[i] / (n_volume_directions() * k);
                     b[position] -=
                       volume_share[p] * (point_volume[p] / k * isochoric[i] +
                                          jacobian[p] * spatial[i]);
@@ -186,6 +264,20 @@ namespace impm
   }
 
 
+  template Tensor<4, 2>
+  FBar<2>::point_tangent(const unsigned int,
+                         const Tensor<4, 2> &,
+                         const Tensor<2, 2> &,
+                         const Tensor<2, 2> &,
+                         HoopTangent<2> *,
+                         const double);
+  template Tensor<4, 3>
+  FBar<3>::point_tangent(const unsigned int,
+                         const Tensor<4, 3> &,
+                         const Tensor<2, 3> &,
+                         const Tensor<2, 3> &,
+                         HoopTangent<3> *,
+                         const double);
   template void
   FBar<2>::add_patch_stiffness(const PointSteps<2> &,
                                const PointGradients<2> &,

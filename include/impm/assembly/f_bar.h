@@ -60,8 +60,9 @@ namespace impm
    * N_{\theta,v} D_{\theta}@f$ and @f$b_{w0}@f$ the term @f$\Delta J_q
    * \bar N_{\theta,w} / \Delta F_{\theta\theta}@f$, with the hoop
    * weights @f$\bar N_\theta@f$; the point's hoop tangent
-   * (HoopTangent) gains the per-point term. Cell pressure unknowns are not
-   * yet formulated in axisymmetry (refused).
+   * (HoopTangent) gains the per-point term. With cell pressure unknowns
+   * the mean stress is the three-dimensional one, and @f$\tilde t@f$ has
+   * a hoop entry.
    *
    * <b>Cell pressure unknowns</b> (`Material points/Cell pressure
    * unknowns`). Plain F-bar gives the points of a patch one volume change,
@@ -382,6 +383,8 @@ namespace impm
      *  isochoric part of a perturbation (t~). */
     std::vector<double>         log_volume, point_volume, bulk_response;
     std::vector<Tensor<2, dim>> pressure_response;
+    /** Per point (pressure unknowns, axisymmetry): t~'s hoop entry. */
+    std::vector<double> pressure_hoop_response;
     /** The equations' contributions, to owned and neighbours' rows. */
     TrilinosWrappers::MPI::Vector pressure_rows;
     /** The owned rows of the last pressure_residuals(). */
