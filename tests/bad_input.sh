@@ -191,7 +191,6 @@ expect axisymmetric_3d "'Grid/Axisymmetric' = 'true' is not allowed: axisymmetry
 expect axisymmetric_negative_radius "'Grid/Lower corner' = '-1, 0' is not allowed: with Axisymmetric = true x is the radius" - -- "$base" --set "Grid/Axisymmetric=true" --set "Grid/Lower corner=-1, 0"
 expect axisymmetric_axis_free "'Grid/Condition x-' = 'none' is not allowed: the grid reaches the axis" also_parallel -- "$base" --set "Grid/Axisymmetric=true" --set "Grid/Condition x-=none"
 expect axisymmetric_updated_lagrangian "Solver/Formulation = updated Lagrangian is not yet available with Grid/Axisymmetric = true" - -- "$base" --set "Grid/Axisymmetric=true" --set "Solver/Formulation=updated Lagrangian"
-expect axisymmetric_cell_pressures "Material points/Cell pressure unknowns is not yet available with Grid/Axisymmetric = true" also_parallel -- "$base" --set "Grid/Axisymmetric=true" --set "Material points/F-bar=true" --set "Material points/Cell pressure unknowns=true"
 plus cone_2d.prm "set Number of rigid bodies = 1\nsubsection Rigid body 1\n set Shape = cone\nend"
 expect cone_in_2d "'Rigid body 1/Shape' = 'cone' is not allowed: a cone is 3D" - -- "$work/cone_2d.prm"
 { cat "$(dirname "$base")/column_3d_gimp_plastic_8.prm"; printf 'set Number of rigid bodies = 1\nsubsection Rigid body 1\n set Shape = cone\n set Axis = 0, 0, 0\n set Displacement = 0, 0, 0\nend\n'; } > "$work/cone_axis.prm"
