@@ -16,8 +16,7 @@ namespace impm
     : FBar(inputs.grid,
            inputs.parameters.material_points.cell_pressure_unknowns,
            inputs.parameters.material_points.pressure_jump_stabilisation)
-  {
-  }
+  {}
 
 
 
