@@ -183,9 +183,9 @@ namespace impm
         "(2 pi r per unit of the plane's area or length), and the points "
         "carry the hoop strain and stress (stress_zz is the hoop stress). "
         "A grid that reaches the axis (Lower corner x = 0) needs the radial "
-        "displacement held there: 'Condition x-' roller or fixed. Not yet "
-        "with F-bar, cell pressure unknowns, ghost stabilisation, springs, "
-        "absorbing boundaries or the updated Lagrangian formulation.");
+        "displacement held there: 'Condition x-' roller or fixed. F-bar "
+        "shares the volume change with the hoop stretch. Not yet with the "
+        "updated Lagrangian formulation (refused).");
       prm.declare_entry("Lower corner",
                         "0, 0",
                         Patterns::List(Patterns::Double(), 2, 3),
