@@ -243,6 +243,24 @@ def circular_plate_axisymmetric(scene, output):
         % (force, boussinesq, boussinesq / force))
 
 
+def circular_footing_tresca(scene, output):
+    picture(scene, output, "plastic_multiplier", "plastic multiplier", cmap="magma_r",
+            extent=((0, 0), (3, 2.5)), limits=(0, 0.05))
+    rows = steps(output)
+    settlement = [0.0] + list(0.03 * column(rows, "load_factor"))
+    pressure = [0.0] + list(-column(rows, "reaction_y+_y") / (math.pi * 1e4))
+    fig, ax = new_plot("settlement (m)", "bearing pressure q / c",
+                       "circular footing on Tresca clay: q / c against settlement")
+    ax.plot(settlement, pressure, "-", lw=1.5, label="IMPM, F-bar, h = R/8")
+    ax.axhline(6.05, color="k", ls="--", label="Houlsby and Wroth, rough: 6.05")
+    ax.set_ylim(0, 8)
+    ax.legend(fontsize=8, loc="lower right")
+    save_plot(fig, scene)
+    k = int(np.argmax(pressure))
+    say(scene, "q/c peak %.3f at %.4f m, %.3f at %.4f m"
+        % (pressure[k], settlement[k], pressure[-1], settlement[-1]))
+
+
 def collapse_like(scene, output, dimension=2, title="collapse"):
     picture(scene, output, "von_mises_stress", "von Mises stress (kPa)", scale=1e-3,
             dimension=dimension)
