@@ -129,11 +129,13 @@ namespace impm
      * then relative to the base, and the faces that hold the material
      * (the base) move with it. Each step's load is that of its end time,
      * @f$f_I = -M_I\, a_g(t_{n+1})@f$ with the lumped nodal mass of the
-     * step's start @f$M_I = \sum_p N_{Ip} m_p@f$ (with generalised-alpha
-     * it is not weighed with the start's: the step's load is off by a
-     * fraction @f$\alpha_f@f$ of a step in time). The load does not depend
-     * on the displacement: no matrix. A scene that shakes its base needs
-     * time and inertia (without inertia the load is a static body force).
+     * step's start @f$M_I = \sum_p N_{Ip} m_p@f$, and in the residual of
+     * the step's start that of its start time, @f$-M_I\, a_g(t_n)@f$
+     * (add_start_forces()): generalised-alpha weighs the two, and the
+     * explicit step and the first step's acceleration take the start's.
+     * The load does not depend on the displacement: no matrix. A scene that
+     * shakes its base needs time and inertia (without inertia the load is a
+     * static body force).
      *
      * @tparam dim Space dimension.
      */
@@ -194,18 +196,36 @@ namespace impm
                     const LoadStepSystem<dim> &system,
                     const StepSpan            &span) override
       {
-        acceleration      = scale * history.value(span.end_time);
-        NodalVector &load = nodal_load.reset(grid);
+        acceleration = scale * history.value(span.end_time);
+        const Tensor<1, dim> start_acceleration =
+          scale * history.value(span.start_time);
+        NodalVector &load       = nodal_load.reset(grid);
+        NodalVector &start_load = start_nodal_load.reset(grid);
         for (const auto &point : material_points.particles())
           {
             const PointStep<dim> &step = system.point_steps.of(point);
             const double m = PointState<dim>(point.get_properties()).mass();
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               for (unsigned int i = 0; i < dim; ++i)
-                load.local_element(step.dofs[v * dim + i]) -=
-                  step.support.weights[v] * m * acceleration[i];
+                {
+                  const unsigned int dof = step.dofs[v * dim + i];
+                  load.local_element(dof) -=
+                    step.support.weights[v] * m * acceleration[i];
+                  start_load.local_element(dof) -=
+                    step.support.weights[v] * m * start_acceleration[i];
+                }
           }
         nodal_load.finish(system, grid);
+        start_nodal_load.finish(system, grid);
+      }
+
+      /** @brief Minus the load of the step's start time. */
+      void
+      add_start_forces(const LoadStepSystem<dim> &,
+                       const NodalVector &,
+                       NodalVector &internal_force) override
+      {
+        start_nodal_load.subtract_from(internal_force);
       }
 
       /** @brief Minus the load, at the owned DoFs of the system (the
@@ -273,8 +293,8 @@ namespace impm
       const BackgroundGrid<dim> &grid;
       /** The base's acceleration at the step's end. */
       Tensor<1, dim> acceleration;
-      /** The nodal load -M a_g of the step. */
-      FixedNodalLoad<dim> nodal_load;
+      /** The nodal load -M a_g of the step's end and of its start. */
+      FixedNodalLoad<dim> nodal_load, start_nodal_load;
     };
   } // namespace
 

@@ -182,6 +182,17 @@ namespace impm
 
   template <int dim>
   void
+  Coupling<dim>::add_start_forces(const LoadStepSystem<dim> &system,
+                                  const NodalVector         &increment,
+                                  NodalVector               &internal_force)
+  {
+    add_forces(system, increment, internal_force);
+  }
+
+
+
+  template <int dim>
+  void
   Coupling<dim>::add_row_residuals(
     std::vector<std::pair<types::global_dof_index, double>> &)
   {}

@@ -56,8 +56,8 @@ namespace impm
      * @f$\alpha_m = (2\rho_\infty - 1)/(\rho_\infty + 1)@f$, @f$\alpha_f =
      * \rho_\infty/(\rho_\infty + 1)@f$, @f$\gamma = 1/2 - \alpha_m +
      * \alpha_f@f$, @f$\beta = (1 - \alpha_m + \alpha_f)^2/4@f$. Newmark is
-     * the case @f$\alpha_m = \alpha_f = 0@f$. The other couplings' forces
-     * (contact, springs) are taken at the step's end, not weighed.
+     * the case @f$\alpha_m = \alpha_f = 0@f$. r^n holds the couplings'
+     * start forces (Coupling::add_start_forces(): springs, a base's shaking).
      *
      * Mass-proportional (Rayleigh) damping @f$C = \alpha_R M@f$ adds
      * @f$\alpha_R (M v^{n+1} + k_r p)@f$, weighed like the internal force.

@@ -74,7 +74,9 @@ namespace impm
     // base's shaking); those that ask for the residual add their own terms.
     for (const auto &coupling : list)
       if (!coupling->needs_start_residual())
-        coupling->add_forces(system, displacement_increment, internal_force);
+        coupling->add_start_forces(system,
+                                   displacement_increment,
+                                   internal_force);
     internal_force.compress(VectorOperation::add);
     assembler.assemble_external_force(start_load_factor, external_force);
     internal_force -= external_force;

@@ -306,6 +306,16 @@ namespace impm
                NodalVector               &internal_force);
 
     /**
+     * @brief As add_forces(), for the residual of the step's start
+     * (set_start_residual()): the force at the step's start time, where it
+     * depends on time (a base's shaking). By default add_forces().
+     */
+    virtual void
+    add_start_forces(const LoadStepSystem<dim> &system,
+                     const NodalVector         &increment,
+                     NodalVector               &internal_force);
+
+    /**
      * @brief Append the residuals of its own rows that this process owns,
      * as (system index, residual), the residual with the sign of an
      * internal force. Collective.
