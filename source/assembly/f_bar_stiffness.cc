@@ -80,6 +80,36 @@ namespace impm
 
 
   template <int dim>
+  Tensor<1, dim>
+  FBar<dim>::node_terms(const unsigned int    p,
+                        const PointStep<dim> &step,
+                        const Tensor<1, dim> &gradient,
+                        const Tensor<2, dim> &map,
+                        const unsigned int    v,
+                        Tensor<1, dim>       &stress_part,
+                        Tensor<1, dim>       &spatial) const
+  {
+    stress_part              = dilatation_stress[p] * gradient;
+    spatial                  = gradient * map;
+    Tensor<1, dim> isochoric = !has_pressure_unknowns() ?
+                                 Tensor<1, dim>() :
+                                 pressure_response[p] * spatial;
+    if (grid.cartesian().axisymmetric) // the hoop row and column
+      {
+        const double hoop_column =
+          step.support.hoop_weights[v] / hoop_stretch[p];
+        stress_part[0] +=
+          step.support.hoop_weights[v] * dilatation_hoop_stress[p];
+        spatial[0] += hoop_column;
+        if (has_pressure_unknowns())
+          isochoric[0] += pressure_hoop_response[p] * hoop_column;
+      }
+    return isochoric;
+  }
+
+
+
+  template <int dim>
   void
   FBar<dim>::add_patch_stiffness(const PointSteps<dim>          &point_steps,
                                  const PointGradients<dim>      &gradients,
@@ -115,14 +145,8 @@ namespace impm
             const double          weight = volume_share[p] * jacobian[p];
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               {
-                Tensor<1, dim> stress_part = dilatation_stress[p] * g[v];
-                Tensor<1, dim> spatial     = g[v] * map;
-                if (!hoop_stretch.empty()) // the hoop row and column
-                  {
-                    const double h_v = step.support.hoop_weights[v];
-                    stress_part[0] += h_v * dilatation_hoop_stress[p];
-                    spatial[0] += h_v / hoop_stretch[p];
-                  }
+                Tensor<1, dim> stress_part, spatial;
+                node_terms(p, step, g[v], map, v, stress_part, spatial);
                 for (unsigned int i = 0; i < dim; ++i)
                   {
                     const int position =
@@ -181,17 +205,9 @@ namespace impm
             corner += volume_share[p] * point_volume[p] / k;
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               {
-                Tensor<1, dim> stress_part = dilatation_stress[p] * g[v];
-                Tensor<1, dim> spatial     = g[v] * map;
-                Tensor<1, dim> isochoric   = pressure_response[p] * spatial;
-                if (!hoop_stretch.empty()) // the hoop row and column
-                  {
-                    const double h_v = step.support.hoop_weights[v];
-                    stress_part[0] += h_v * dilatation_hoop_stress[p];
-                    spatial[0] += h_v / hoop_stretch[p];
-                    isochoric[0] +=
-                      pressure_hoop_response[p] * h_v / hoop_stretch[p];
-                  }
+                Tensor<1, dim>       stress_part, spatial;
+                const Tensor<1, dim> isochoric =
+                  node_terms(p, step, g[v], map, v, stress_part, spatial);
                 for (unsigned int i = 0; i < dim; ++i)
                   {
                     const int position =

@@ -222,6 +222,7 @@ namespace impm
       {
         time_step = span.time_step();
         nodes.map_points(material_points, system);
+        stiffness_damping.begin_step(material_points, system.point_steps);
         start_residual.clear();
         current_points = &material_points;
         current_system = &system;
@@ -298,7 +299,6 @@ namespace impm
               nodes,
               stiffness_damping.active() ?
                 stiffness_damping.damped_residual(nodes,
-                                                  *current_points,
                                                   *current_system,
                                                   internal_minus_external) :
                 internal_minus_external,
@@ -352,10 +352,7 @@ namespace impm
               matrix.add(row, row, diagonal * c * nodes.mass(i));
           }
         if (stiffness_damping.active())
-          stiffness_damping.add_implicit_matrix(*current_points,
-                                                system,
-                                                time_step,
-                                                matrix);
+          stiffness_damping.add_implicit_matrix(system, time_step, matrix);
         return true;
       }
 
@@ -413,12 +410,8 @@ namespace impm
             }
         // The viscous stress: internal, not in force_on_material.
         if (stiffness_damping.active())
-          norm_squared += stiffness_damping.add_implicit_forces(nodes,
-                                                                *current_points,
-                                                                *current_system,
-                                                                increment,
-                                                                time_step,
-                                                                internal_force);
+          norm_squared += stiffness_damping.add_implicit_forces(
+            nodes, *current_system, increment, time_step, internal_force);
         // The reference: the inertial force, floored by a millionth of its
         // momentum part M v / (beta dt). A body moving freely (no load, no
         // acceleration) has an inertial force of round-off size, made of

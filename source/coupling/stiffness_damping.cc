@@ -21,6 +21,27 @@ namespace impm
 
 
   template <int dim>
+  void
+  StiffnessDamping<dim>::begin_step(const MaterialPoints<dim> &material_points,
+                                    const PointSteps<dim>     &steps)
+  {
+    if (!active())
+      return;
+    scaled_moduli.resize(steps.size());
+    for (const auto &point : material_points.particles())
+      {
+        const Material &material = *steps.of(point).material;
+        const double    scale =
+          coefficient * PointState<dim>(point.get_properties()).volume();
+        const double mu                      = material.shear_modulus();
+        scaled_moduli[steps.index_of(point)] = {
+          scale * (material.p_wave_modulus() - 2. * mu), scale * mu};
+      }
+  }
+
+
+
+  template <int dim>
   double
   StiffnessDamping<dim>::critical_time_step(const double undamped_step) const
   {
@@ -32,16 +53,15 @@ namespace impm
 
   template <int dim>
   double
-  StiffnessDamping<dim>::add_force(const MaterialPoints<dim> &material_points,
-                                   const LoadStepSystem<dim> &system,
+  StiffnessDamping<dim>::add_force(const LoadStepSystem<dim> &system,
                                    const std::vector<double> &nodal_velocity,
                                    NodalVector               &force) const
   {
     const bool axisymmetric = system.axisymmetric();
     double     squares      = 0.;
-    for (const auto &point : material_points.particles())
+    for (unsigned int p = 0; p < system.point_steps.size(); ++p)
       {
-        const PointStep<dim> &step = system.point_steps.of(point);
+        const PointStep<dim> &step = system.point_steps[p];
         const auto           &s    = step.support;
         Tensor<2, dim>        rate; // the velocity's gradient
         double                hoop_rate = 0.;
@@ -54,26 +74,25 @@ namespace impm
               hoop_rate +=
                 s.hoop_weights[v] * nodal_velocity[step.dofs[v * dim]];
           }
-        const double scale =
-          coefficient * PointState<dim>(point.get_properties()).volume();
-        const double mu          = step.material->shear_modulus();
-        const double lambda      = step.material->p_wave_modulus() - 2. * mu;
-        const double volume_rate = trace(rate) + hoop_rate;
         // V sigma_d = beta_R V (lambda tr I + 2 mu sym(L))
-        Tensor<2, dim> stress = scale * mu * (rate + transpose(rate));
+        const auto [lambda, mu]    = scaled_moduli[p];
+        const double   volume_rate = trace(rate) + hoop_rate;
+        Tensor<2, dim> stress      = mu * (rate + transpose(rate));
         for (unsigned int i = 0; i < dim; ++i)
-          stress[i][i] += scale * lambda * volume_rate;
-        const double hoop_stress =
-          scale * (lambda * volume_rate + 2. * mu * hoop_rate);
+          stress[i][i] += lambda * volume_rate;
+        const double hoop_stress = lambda * volume_rate + 2. * mu * hoop_rate;
         for (unsigned int v = 0; v < s.n_nodes; ++v)
           {
             const Tensor<1, dim> f = stress * s.gradients[v];
             for (unsigned int i = 0; i < dim; ++i)
               force.local_element(step.dofs[v * dim + i]) += f[i];
-            if (axisymmetric)
-              force.local_element(step.dofs[v * dim]) +=
-                hoop_stress * s.hoop_weights[v];
             squares += f.norm_square();
+            if (axisymmetric)
+              {
+                const double hoop_force = hoop_stress * s.hoop_weights[v];
+                force.local_element(step.dofs[v * dim]) += hoop_force;
+                squares += hoop_force * (hoop_force + 2. * f[0]);
+              }
           }
       }
     return squares;
@@ -83,13 +102,11 @@ namespace impm
 
   template <int dim>
   double
-  StiffnessDamping<dim>::add_implicit_forces(
-    const NodalMomentum<dim>  &nodes,
-    const MaterialPoints<dim> &material_points,
-    const LoadStepSystem<dim> &system,
-    const NodalVector         &increment,
-    const double               time_step,
-    NodalVector               &internal_force)
+  StiffnessDamping<dim>::add_implicit_forces(const NodalMomentum<dim>  &nodes,
+                                             const LoadStepSystem<dim> &system,
+                                             const NodalVector &increment,
+                                             const double       time_step,
+                                             NodalVector       &internal_force)
   {
     velocity.resize(nodes.n_local());
     for (unsigned int i = 0; i < nodes.n_local(); ++i)
@@ -110,7 +127,7 @@ namespace impm
                       (1. - gamma_over_beta) * v +
                       time_step * (1. - 0.5 * gamma_over_beta) * a + k_r * v;
       }
-    return add_force(material_points, system, velocity, internal_force);
+    return add_force(system, velocity, internal_force);
   }
 
 
@@ -118,18 +135,13 @@ namespace impm
   template <int dim>
   void
   StiffnessDamping<dim>::add_implicit_matrix(
-    const MaterialPoints<dim>      &material_points,
     const LoadStepSystem<dim>      &system,
     const double                    time_step,
     TrilinosWrappers::SparseMatrix &matrix)
   {
     const bool   axisymmetric = system.axisymmetric();
-    const double factor       = coefficient * gamma_over_beta / time_step;
+    const double factor       = gamma_over_beta / time_step;
     const auto  &steps        = system.point_steps;
-    volumes.resize(steps.size());
-    for (const auto &point : material_points.particles())
-      volumes[steps.index_of(point)] =
-        PointState<dim>(point.get_properties()).volume();
     // One dense block per assembly group (the points that share a support,
     // LoadStepSystem::assembly_groups): K_(vi)(wk) = V (lambda b_vi b_wk +
     // mu (delta_ik g_v.g_w + g_vk g_wi) + 2 mu delta_i0 delta_k0 h_v h_w),
@@ -147,10 +159,8 @@ namespace impm
             for (unsigned int v = 0; v < s.n_nodes; ++v)
               position[v] =
                 group.node_positions.empty() ? v : *node_positions++;
-            const double scale = factor * volumes[p];
-            const double mu    = scale * step.material->shear_modulus();
-            const double lambda =
-              scale * step.material->p_wave_modulus() - 2. * mu;
+            const double lambda = factor * scaled_moduli[p].first;
+            const double mu     = factor * scaled_moduli[p].second;
             for (unsigned int v = 0; v < s.n_nodes; ++v)
               for (unsigned int w = 0; w < s.n_nodes; ++w)
                 {
@@ -195,11 +205,9 @@ namespace impm
 
   template <int dim>
   const NodalVector &
-  StiffnessDamping<dim>::damped_residual(
-    const NodalMomentum<dim>  &nodes,
-    const MaterialPoints<dim> &material_points,
-    const LoadStepSystem<dim> &system,
-    const NodalVector         &residual)
+  StiffnessDamping<dim>::damped_residual(const NodalMomentum<dim>  &nodes,
+                                         const LoadStepSystem<dim> &system,
+                                         const NodalVector         &residual)
   {
     velocity.resize(nodes.n_local());
     for (unsigned int i = 0; i < nodes.n_local(); ++i)
@@ -207,7 +215,7 @@ namespace impm
                       nodes.momentum(i) / nodes.mass(i) :
                       0.;
     residual_with_damping.reinit(residual);
-    add_force(material_points, system, velocity, residual_with_damping);
+    add_force(system, velocity, residual_with_damping);
     residual_with_damping.compress(VectorOperation::add);
     residual_with_damping.add(1., residual);
     residual_with_damping.update_ghost_values();

@@ -336,6 +336,24 @@ namespace impm
                            const OffProcessRows           &off_process_rows);
 
     /**
+     * @brief Point @p p's terms at node @p v of its support (gradient @p
+     * gradient, gradient map @p map), in axisymmetry with the hoop's:
+     * @p stress_part, the force of its dilatation stress, @f$D_p \nabla
+     * S_v@f$ (+ @f$\bar N_{\theta,v} D_{\theta}@f$ radially), and @p
+     * spatial, the spatial gradient of tr G (+ @f$\bar N_{\theta,v} /
+     * \Delta F_{\theta\theta}@f$). Returns @f$\tilde t@f$ applied to it
+     * (pressure unknowns; zero otherwise).
+     */
+    Tensor<1, dim>
+    node_terms(const unsigned int    p,
+               const PointStep<dim> &step,
+               const Tensor<1, dim> &gradient,
+               const Tensor<2, dim> &map,
+               const unsigned int    v,
+               Tensor<1, dim>       &stress_part,
+               Tensor<1, dim>       &spatial) const;
+
+    /**
      * @brief Number the pressure unknowns from @p first_pressure_index,
      * find each patch's neighbours (their unknowns from their owners for
      * ghost cells) and make each patch's block. Collective.

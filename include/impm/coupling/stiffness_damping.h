@@ -11,6 +11,7 @@
 #include <impm/system/dense_block_adder.h>
 #include <impm/system/load_step_system.h>
 
+#include <utility>
 #include <vector>
 
 namespace impm
@@ -66,6 +67,12 @@ namespace impm
       return coefficient > 0.;
     }
 
+    /** @brief Keep each point's elastic moduli times @f$\beta_R V^n@f$
+     *  for the step (nothing when inactive). */
+    void
+    begin_step(const MaterialPoints<dim> &material_points,
+               const PointSteps<dim>     &steps);
+
     /**
      * @brief The stable explicit time step with the damping, from the
      * undamped one @p undamped_step at Courant number 1, @f$\Delta t_c
@@ -84,7 +91,6 @@ namespace impm
      */
     double
     add_implicit_forces(const NodalMomentum<dim>  &nodes,
-                        const MaterialPoints<dim> &material_points,
                         const LoadStepSystem<dim> &system,
                         const NodalVector         &increment,
                         const double               time_step,
@@ -93,8 +99,7 @@ namespace impm
     /** @brief Implicit integrators: add the force's derivative,
      *  @f$\beta_R \gamma/(\beta\Delta t)\, K_e@f$, to @p matrix. */
     void
-    add_implicit_matrix(const MaterialPoints<dim>      &material_points,
-                        const LoadStepSystem<dim>      &system,
+    add_implicit_matrix(const LoadStepSystem<dim>      &system,
                         const double                    time_step,
                         TrilinosWrappers::SparseMatrix &matrix);
 
@@ -106,7 +111,6 @@ namespace impm
      */
     const NodalVector &
     damped_residual(const NodalMomentum<dim>  &nodes,
-                    const MaterialPoints<dim> &material_points,
                     const LoadStepSystem<dim> &system,
                     const NodalVector         &residual);
 
@@ -116,8 +120,7 @@ namespace impm
      *  the sum of the squares of the points' nodal forces on this
      *  process. */
     double
-    add_force(const MaterialPoints<dim> &material_points,
-              const LoadStepSystem<dim> &system,
+    add_force(const LoadStepSystem<dim> &system,
               const std::vector<double> &velocity,
               NodalVector               &force) const;
 
@@ -129,10 +132,12 @@ namespace impm
     std::vector<double> velocity;
     /** The explicit integrators' damped residual. */
     NodalVector residual_with_damping;
-    /** The points' volumes at the step's start (by step index), an
-     *  assembly group's dense block and where its rows and columns are in
-     *  it: scratch of the matrix. */
-    std::vector<double>       volumes, block;
+    /** Per point (by step index): @f$\beta_R V^n (\lambda, \mu)@f$ of
+     *  the step (begin_step()). */
+    std::vector<std::pair<double, double>> scaled_moduli;
+    /** An assembly group's dense block and where its rows and columns are
+     *  in it: scratch of the matrix. */
+    std::vector<double>       block;
     std::vector<unsigned int> row_offsets, column_offsets;
     /** Adds the groups' blocks. */
     DenseBlockAdder block_adder;
