@@ -72,8 +72,11 @@ main(int argc, char **argv)
         break;
       }
   // Global: the plugins a scene loads, and Open MPI's own components,
-  // resolve their symbols against it.
-  void *handle = dlopen(library.c_str(), RTLD_NOW | RTLD_GLOBAL);
+  // resolve their symbols against it. Lazy: a function's symbol is bound
+  // at its first call, so a run binds only what it calls (the core library
+  // and deal.II are built together; a scene's own plugins are loaded with
+  // every symbol bound at once, so a missing one is reported at the start).
+  void *handle = dlopen(library.c_str(), RTLD_LAZY | RTLD_GLOBAL);
   if (handle == nullptr)
     {
       std::cerr << "Error: cannot load IMPM's library " << library << ": "
