@@ -1,17 +1,7 @@
-#include <deal.II/base/quadrature_lib.h>
-
-#include <deal.II/fe/fe_values.h>
-
-#include <deal.II/grid/grid_tools.h>
-
-#include <deal.II/lac/vector.h>
-
+// Ghost stabilisation as a coupling: the stiffness's face penalty.
 #include <impm/assembly/ghost_stabilisation.h>
-#include <impm/system/load_step_system.h>
 
 #include <algorithm>
-#include <array>
-#include <sstream>
 
 namespace impm
 {
@@ -55,258 +45,34 @@ namespace impm
 
 
 
+  namespace
+  {
+    /** The largest Young's modulus of @p bodies. */
+    template <int dim>
+    double
+    largest_modulus(const std::vector<Body<dim>> &bodies)
+    {
+      double modulus = 0.;
+      for (const auto &body : bodies)
+        modulus = std::max(modulus, body.material->elastic_modulus());
+      return modulus;
+    }
+  } // namespace
+
+
+
   template <int dim>
   GhostStabilisation<dim>::GhostStabilisation(
     const Parameters::Stabilisation &parameters,
     const BackgroundGrid<dim>       &grid,
     const std::vector<Body<dim>>    &bodies)
     : parameters(parameters)
-    , grid(grid)
-  {
-    for (const auto &body : bodies)
-      modulus = std::max(modulus, body.material->elastic_modulus());
-  }
-
-
-
-  template <int dim>
-  void
-  GhostStabilisation<dim>::choose_faces(
-    const MaterialPoints<dim> &material_points,
-    const std::vector<bool>   &touched)
-  {
-    face_penalties.clear();
-    const auto &dof_handler = grid.get_dof_handler();
-    const auto &fe          = grid.get_fe();
-
-    // Volume fraction of each cell filled by its points' current volumes,
-    // shared with the neighbours' ghost copies.
-    std::vector<double> fill = material_points.cell_fill_fractions(grid);
-    GridTools::exchange_cell_data_to_ghosts<double, DoFHandler<dim>>(
-      dof_handler,
-      [&](const typename DoFHandler<dim>::active_cell_iterator &cell) {
-        return fill[cell->active_cell_index()];
-      },
-      [&](const typename DoFHandler<dim>::active_cell_iterator &cell,
-          const double value) { fill[cell->active_cell_index()] = value; });
-
-    // A cell takes part when all its DoFs are in use.
-    const unsigned int                   n = fe.n_dofs_per_cell();
-    std::vector<types::global_dof_index> dofs_here(n), dofs_there(n);
-    const auto local = [&](const types::global_dof_index dof) {
-      return grid.local_index(dof);
-    };
-    const auto in_use = [&](const std::vector<types::global_dof_index> &dofs) {
-      for (const auto dof : dofs)
-        if (!touched[local(dof)])
-          return false;
-      return true;
-    };
-
-    const QGauss<dim - 1> quadrature(2);
-    const UpdateFlags     flags = update_gradients | update_normal_vectors |
-                              update_JxW_values | update_quadrature_points;
-    FEFaceValues<dim>   here(grid.get_mapping(), fe, quadrature, flags);
-    FEFaceValues<dim>   there(grid.get_mapping(), fe, quadrature, flags);
-    std::vector<double> normal_derivative(2 * n);
-    // Per face number: the penalty matrix of the last cell extents.
-    std::array<FullMatrix<double>, GeometryInfo<dim>::faces_per_cell>
-                                                                  face_matrices;
-    std::array<Tensor<1, dim>, GeometryInfo<dim>::faces_per_cell> face_extents;
-    std::array<bool, GeometryInfo<dim>::faces_per_cell> face_matrix_known{};
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (!cell->is_locally_owned())
-          continue;
-        cell->get_dof_indices(dofs_here);
-        if (!in_use(dofs_here))
-          continue;
-        for (const unsigned int f : cell->face_indices())
-          {
-            if (cell->at_boundary(f))
-              continue;
-            const auto neighbor = cell->neighbor(f);
-            // Each face once: by the lower cell id between owned cells, by
-            // the lower rank across processes.
-            if (neighbor->is_locally_owned() ?
-                  !(cell->id() < neighbor->id()) :
-                  cell->subdomain_id() > neighbor->subdomain_id())
-              continue;
-            if (std::min(fill[cell->active_cell_index()],
-                         fill[neighbor->active_cell_index()]) >=
-                parameters.fill_threshold)
-              continue;
-            neighbor->get_dof_indices(dofs_there);
-            if (!in_use(dofs_there))
-              continue;
-
-            // The matrix depends on the face's number and the cell's
-            // extents only (Cartesian cells, Q1): computed once for each.
-            Tensor<1, dim> extents;
-            for (unsigned int d = 0; d < dim; ++d)
-              extents[d] = cell->extent_in_direction(d);
-            // (Equal to round-off: the extents are vertex differences.)
-            if (!face_matrix_known[f] ||
-                (face_extents[f] - extents).norm() > 1e-12 * extents.norm())
-              {
-                here.reinit(cell, f);
-                there.reinit(neighbor, cell->neighbor_of_neighbor(f));
-                const double scale = parameters.penalty_scale * modulus *
-                                     cell->extent_in_direction(f / 2);
-                FullMatrix<double> &matrix = face_matrices[f];
-                matrix.reinit(2 * n, 2 * n);
-                for (unsigned int q = 0; q < quadrature.size(); ++q)
-                  {
-                    AssertThrow(here.quadrature_point(q).distance(
-                                  there.quadrature_point(q)) <
-                                  1e-10 * cell->diameter(),
-                                ExcInternalError());
-                    const Tensor<1, dim> normal = here.normal_vector(q);
-                    for (unsigned int i = 0; i < n; ++i)
-                      {
-                        const unsigned int c =
-                          fe.system_to_component_index(i).first;
-                        normal_derivative[i] =
-                          here.shape_grad_component(i, q, c) * normal;
-                        normal_derivative[n + i] =
-                          -there.shape_grad_component(i, q, c) * normal;
-                      }
-                    for (unsigned int i = 0; i < 2 * n; ++i)
-                      for (unsigned int j = 0; j < 2 * n; ++j)
-                        if (fe.system_to_component_index(i % n).first ==
-                            fe.system_to_component_index(j % n).first)
-                          matrix(i, j) += scale * normal_derivative[i] *
-                                          normal_derivative[j] * here.JxW(q);
-                  }
-                face_matrix_known[f] = true;
-                face_extents[f]      = extents;
-              }
-            // In axisymmetry the face is a ring: 2 pi r at its centre.
-            FullMatrix<double> ring_matrix;
-            if (grid.cartesian().axisymmetric)
-              {
-                ring_matrix = face_matrices[f];
-                ring_matrix *=
-                  grid.cartesian().ring_length(cell->face(f)->center());
-              }
-            const FullMatrix<double> &matrix =
-              grid.cartesian().axisymmetric ? ring_matrix : face_matrices[f];
-            // The two cells share the face's nodes: each DoF once, with
-            // its rows and columns summed.
-            std::vector<unsigned int> cell_dofs(2 * n);
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                cell_dofs[i]     = local(dofs_here[i]);
-                cell_dofs[n + i] = local(dofs_there[i]);
-              }
-            std::vector<unsigned char> cell_components(2 * n);
-            for (unsigned int i = 0; i < 2 * n; ++i)
-              cell_components[i] = fe.system_to_component_index(i % n).first;
-            face_penalties.push_back(
-              merge_shared_dofs(cell_dofs, cell_components, matrix));
-          }
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  GhostStabilisation<dim>::add_penalty_forces(const NodalVector &increment,
-                                              NodalVector &internal_force) const
-  {
-    Vector<double> face_increment, face_force;
-    for (const FacePenalty &face : face_penalties)
-      {
-        face_increment.reinit(face.dofs.size());
-        face_force.reinit(face.dofs.size());
-        for (unsigned int i = 0; i < face.dofs.size(); ++i)
-          face_increment[i] = increment.local_element(face.dofs[i]);
-        face.matrix.vmult(face_force, face_increment);
-        for (unsigned int i = 0; i < face.dofs.size(); ++i)
-          internal_force.local_element(face.dofs[i]) += face_force[i];
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  GhostStabilisation<dim>::add_penalty_matrix(
-    const LoadStepSystem<dim>      &system,
-    TrilinosWrappers::SparseMatrix &matrix) const
-  {
-    // Each face's block on its DoFs in the linear system, one component at
-    // a time (the penalty couples a component only to itself: a third of
-    // the block in 3D), by rows in ascending system order (as
-    // DenseBlockAdder wants them).
-    std::vector<std::pair<types::global_dof_index, unsigned int>> entries;
-    std::vector<types::global_dof_index>                          rows;
-    std::vector<unsigned int>                                     local;
-    std::vector<unsigned int>                                     row_offsets;
-    for (const FacePenalty &face : face_penalties)
-      for (unsigned int component = 0; component < dim; ++component)
-        {
-          entries.clear();
-          for (unsigned int i = 0; i < face.dofs.size(); ++i)
-            {
-              const auto row = system.system_index(face.dofs[i]);
-              if (row != numbers::invalid_dof_index &&
-                  face.components[i] == component)
-                entries.emplace_back(row, i);
-            }
-          if (entries.empty())
-            continue;
-          std::sort(entries.begin(), entries.end());
-          rows.resize(entries.size());
-          local.resize(entries.size());
-          for (unsigned int k = 0; k < entries.size(); ++k)
-            {
-              rows[k]  = entries[k].first;
-              local[k] = entries[k].second;
-            }
-          // The face's matrix is row-major.
-          row_offsets.resize(entries.size());
-          for (unsigned int k = 0; k < entries.size(); ++k)
-            row_offsets[k] = local[k] * face.matrix.n();
-          block_adder.add(rows.data(),
-                          rows.size(),
-                          StoredBlock{&face.matrix(0, 0),
-                                      row_offsets.data(),
-                                      local.data()},
-                          matrix,
-                          system.off_process_rows);
-        }
-  }
-
-
-
-  template <int dim>
-  typename GhostStabilisation<dim>::FacePenalty
-  GhostStabilisation<dim>::merge_shared_dofs(
-    const std::vector<unsigned int>  &cell_dofs,
-    const std::vector<unsigned char> &cell_components,
-    const FullMatrix<double>         &cell_matrix)
-  {
-    FacePenalty face;
-    face.dofs = cell_dofs;
-    std::sort(face.dofs.begin(), face.dofs.end());
-    face.dofs.erase(std::unique(face.dofs.begin(), face.dofs.end()),
-                    face.dofs.end());
-    std::vector<unsigned int> position(cell_dofs.size());
-    for (unsigned int i = 0; i < cell_dofs.size(); ++i)
-      position[i] =
-        std::lower_bound(face.dofs.begin(), face.dofs.end(), cell_dofs[i]) -
-        face.dofs.begin();
-    face.components.resize(face.dofs.size());
-    for (unsigned int i = 0; i < cell_dofs.size(); ++i)
-      face.components[position[i]] = cell_components[i];
-    face.matrix.reinit(face.dofs.size(), face.dofs.size());
-    for (unsigned int i = 0; i < cell_dofs.size(); ++i)
-      for (unsigned int j = 0; j < cell_dofs.size(); ++j)
-        face.matrix(position[i], position[j]) += cell_matrix(i, j);
-    return face;
-  }
+    , penalty(grid,
+              parameters.penalty_scale,
+              largest_modulus(bodies),
+              1,
+              parameters.fill_threshold)
+  {}
 
 
 
@@ -341,7 +107,7 @@ namespace impm
                                    const LoadStepSystem<dim> &,
                                    const std::vector<bool> &touched)
   {
-    choose_faces(material_points, touched);
+    penalty.choose_faces(material_points, touched);
     return 0;
   }
 
@@ -355,15 +121,7 @@ namespace impm
     const CouplingRows &,
     std::vector<std::vector<types::global_dof_index>> &blocks)
   {
-    for (const FacePenalty &face : face_penalties)
-      {
-        std::vector<types::global_dof_index> indices;
-        for (const unsigned int dof : face.dofs)
-          if (system.system_index(dof) != numbers::invalid_dof_index)
-            indices.push_back(system.system_index(dof));
-        std::sort(indices.begin(), indices.end());
-        blocks.push_back(std::move(indices));
-      }
+    penalty.add_blocks(system, blocks);
   }
 
 
@@ -374,7 +132,12 @@ namespace impm
                                       const NodalVector &increment,
                                       NodalVector       &internal_force)
   {
-    add_penalty_forces(increment, internal_force);
+    penalty.add_forces(
+      make_array_view(increment.begin(),
+                      increment.begin() + increment.locally_owned_size() +
+                        increment.get_partitioner()->n_ghost_indices()),
+      1.,
+      internal_force);
   }
 
 
@@ -385,7 +148,7 @@ namespace impm
     const LoadStepSystem<dim>      &system,
     TrilinosWrappers::SparseMatrix &matrix)
   {
-    add_penalty_matrix(system, matrix);
+    penalty.add_matrix(system, matrix, 1.);
     return true;
   }
 

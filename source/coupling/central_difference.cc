@@ -75,6 +75,29 @@ namespace impm
 
 
   template <int dim>
+  std::string
+  explicit_step_refusal(const double              time_step,
+                        const double              limit,
+                        const CartesianGrid<dim> &grid)
+  {
+    // The run started with its nominal step at most the Courant number
+    // times the stable step (check_explicit_time_step()); a step is cut
+    // only when the points' state has brought the true limit (Courant
+    // number 1) below it, so that small changes of density do not cut
+    // steps the Courant number's margin covers.
+    if (time_step <= limit * (1. + 1e-12))
+      return "";
+    std::ostringstream out;
+    out << "the time step " << time_step
+        << " s is above the stable explicit step " << limit
+        << " s at Courant number 1 (smallest cell " << smallest_cell_size(grid)
+        << " m, speed of sound " << smallest_cell_size(grid) / limit << " m/s)";
+    return out.str();
+  }
+
+
+
+  template <int dim>
   void
   central_difference_step(const NodalMomentum<dim>  &nodes,
                           const NodalVector         &r,
@@ -161,6 +184,10 @@ namespace impm
                           std::vector<double> &,
                           std::vector<double> &,
                           std::vector<double> &);
+  template std::string
+  explicit_step_refusal(const double, const double, const CartesianGrid<2> &);
+  template std::string
+  explicit_step_refusal(const double, const double, const CartesianGrid<3> &);
   template void
   check_explicit_time_step(const CouplingInputs<2> &,
                            const TimeIntegrator &,

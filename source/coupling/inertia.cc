@@ -1,7 +1,6 @@
 // Inertia as a coupling: implicit Newmark time stepping in the previously
 // converged form, with the lumped or consistent mass of the start-of-step
 // grid.
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 
@@ -9,6 +8,8 @@
 #include <impm/base/names.h>
 #include <impm/coupling/central_difference.h>
 #include <impm/coupling/coupling.h>
+#include <impm/coupling/initial_velocity.h>
+#include <impm/coupling/mass_ghost_penalty.h>
 #include <impm/coupling/nodal_momentum.h>
 #include <impm/coupling/stiffness_damping.h>
 #include <impm/coupling/time_integrator.h>
@@ -123,50 +124,28 @@ namespace impm
                           "the quasi-static statement, with no mass matrix "
                           "and no velocities stored.");
         TimeIntegrator::declare_parameters(prm);
-        prm.declare_entry("Initial velocity",
-                          "0",
-                          Patterns::Anything(),
-                          "The points' velocity at the start, in m/s: 0, or "
-                          "one expression per axis separated by ';' in the "
-                          "initial position x, y (and z) and the constant "
-                          "pi (deal.II's FunctionParser, muparser syntax), "
-                          "e.g. '0.1*sin(pi*x/50); 0'.");
+        MassGhostPenalty<dim>::declare_parameters(prm);
+        InitialVelocity<dim>::declare_parameters(prm);
       }
 
       /** @brief The inertia of a scene (from its subsection; it needs the
        *  scene's time). */
       explicit Inertia(const CouplingInputs<dim> &inputs)
         : integrator(inputs.prm)
-        , initial_velocity_expression(inputs.prm.get("Initial velocity"))
+        , initial_velocity(inputs.prm)
         , grid(inputs.grid)
         , nodes(inputs.grid)
         , stiffness_damping(integrator)
+        , mass_ghost(inputs.prm,
+                     integrator,
+                     inputs.grid,
+                     inputs.parameters.bodies)
       {
         if (!inputs.time.in_time())
           throw InputError("Inertia needs time: set 'Time/End time' above 0 "
                            "(the load steps are then time steps).");
         if (integrator.is_explicit())
           check_explicit_time_step(inputs, integrator, stiffness_damping);
-        if (initial_velocity_expression != "0")
-          {
-            initial_velocity = std::make_unique<FunctionParser<dim>>(dim);
-            try
-              {
-                initial_velocity->initialize(dim == 2 ? "x,y" : "x,y,z",
-                                             initial_velocity_expression,
-                                             {{"pi", numbers::PI}});
-              }
-            catch (const ExceptionBase &)
-              {
-                throw InputError("Parameter 'Inertia/Initial velocity' = '" +
-                                 initial_velocity_expression +
-                                 "' is not allowed: it must "
-                                 "be 0 or " +
-                                 std::to_string(dim) + " expressions in " +
-                                 (dim == 2 ? "x, y" : "x, y, z") +
-                                 " separated by ';'.");
-              }
-          }
       }
 
       /** @brief True: the mass matrix holds the material in every
@@ -188,22 +167,17 @@ namespace impm
       {
         std::ostringstream out;
         out << "inertia: " << integrator.description();
-        if (initial_velocity)
-          out << ", initial velocity " << initial_velocity_expression;
+        if (initial_velocity.active())
+          out << ", " << initial_velocity.description();
+        if (mass_ghost.active())
+          out << ", " << mass_ghost.description();
         return {out.str()};
       }
 
       void
       initialize_points(MaterialPoints<dim> &material_points) override
       {
-        if (!initial_velocity)
-          return;
-        material_points.initialize_coupling_field(
-          "velocity",
-          [this](const PointState<dim> &state, const ArrayView<double> &v) {
-            for (unsigned int d = 0; d < dim; ++d)
-              v[d] = initial_velocity->value(state.initial_position(), d);
-          });
+        initial_velocity.initialize(material_points);
       }
 
       /** @brief A resumed run's points carry their accelerations. */
@@ -211,6 +185,26 @@ namespace impm
       load(const RunState &) override
       {
         started = true;
+      }
+
+      /** @brief The mass ghost penalty's faces of the step. */
+      unsigned int
+      prepare(const MaterialPoints<dim> &material_points,
+              const LoadStepSystem<dim> &,
+              const std::vector<bool> &touched) override
+      {
+        mass_ghost.choose_faces(material_points, touched);
+        return 0;
+      }
+
+      /** @brief The mass ghost penalty's blocks. */
+      void
+      setup(const MaterialPoints<dim> &,
+            const LoadStepSystem<dim> &system,
+            const CouplingRows &,
+            std::vector<std::vector<types::global_dof_index>> &blocks) override
+      {
+        mass_ghost.add_blocks(system, blocks);
       }
 
       /** @brief The nodal mass, momentum and mass times acceleration of
@@ -224,8 +218,9 @@ namespace impm
         nodes.map_points(material_points, system);
         stiffness_damping.begin_step(material_points, system.point_steps);
         start_residual.clear();
-        current_points = &material_points;
-        current_system = &system;
+        start_velocity_known = false;
+        current_points       = &material_points;
+        current_system       = &system;
         const MPI_Comm communicator =
           grid.get_triangulation().get_communicator();
         if (integrator.is_explicit())
@@ -265,22 +260,12 @@ namespace impm
       step_increment(const LoadStepSystem<dim> &system,
                      NodalVector               &increment) override
       {
-        // The run started with its nominal step at most the Courant number
-        // times the stable step (check_explicit_time_step()); a step is cut
-        // only when the points' state has brought the true limit (Courant
-        // number 1) below it, so that small changes of density do not cut
-        // steps the Courant number's margin covers.
-        const double limit = stable_step_size / integrator.courant_number;
-        if (time_step > limit * (1. + 1e-12))
-          {
-            std::ostringstream out;
-            out << "the time step " << time_step
-                << " s is above the stable explicit step " << limit
-                << " s at Courant number 1 (smallest cell "
-                << smallest_cell_size(grid.cartesian()) << " m, speed of sound "
-                << smallest_cell_size(grid.cartesian()) / limit << " m/s)";
-            return out.str();
-          }
+        const std::string refusal =
+          explicit_step_refusal(time_step,
+                                stable_step_size / integrator.courant_number,
+                                grid.cartesian());
+        if (!refusal.empty())
+          return refusal;
         for (unsigned int i = 0; i < n_local(); ++i)
           if (system.system_index(i) != numbers::invalid_dof_index)
             increment.local_element(i) = explicit_increment[i];
@@ -353,6 +338,7 @@ namespace impm
           }
         if (stiffness_damping.active())
           stiffness_damping.add_implicit_matrix(system, time_step, matrix);
+        mass_ghost.add_matrix(system, time_step, matrix);
         return true;
       }
 
@@ -408,6 +394,7 @@ namespace impm
               norm_squared += force * force;
               force_on_material[grid.component(i)] += force;
             }
+        mass_ghost.add_forces(increment, time_step, internal_force);
         // The viscous stress: internal, not in force_on_material.
         if (stiffness_damping.active())
           norm_squared += stiffness_damping.add_implicit_forces(
@@ -454,27 +441,11 @@ namespace impm
             // (owned and ghost DoFs: the points read both).
             std::vector<double> new_acceleration(n_local()),
               new_velocity(n_local()), velocity_change(n_local());
-            // The start's nodal velocity and acceleration: the momentum
-            // over the mass, lumped or consistent.
-            std::vector<double> start_velocity, start_acceleration;
-            if (integrator.consistent_mass)
-              nodes.consistent_velocity_and_acceleration(
-                material_points,
-                steps,
-                integrator.mass_regularisation,
-                start_velocity,
-                start_acceleration);
+            compute_start_velocity();
             for (unsigned int i = 0; i < n_local(); ++i)
               {
-                const double m = nodes.mass(i);
-                const double v = integrator.consistent_mass ?
-                                   start_velocity[i] :
-                                 m > 0. ? nodes.momentum(i) / m :
-                                          0.;
-                const double a = integrator.consistent_mass ?
-                                   start_acceleration[i] :
-                                 m > 0. ? nodes.mass_acceleration(i) / m :
-                                          0.;
+                const double v = start_velocity[i];
+                const double a = start_acceleration[i];
                 new_acceleration[i] =
                   (increment.local_element(i) - time_step * v) /
                     (integrator.beta * time_step * time_step) -
@@ -539,6 +510,21 @@ namespace impm
       }
 
     private:
+      /** The nodes' start velocity and acceleration of this attempt, once
+       *  (NodalMomentum::start_velocity_and_acceleration()). Collective. */
+      void
+      compute_start_velocity()
+      {
+        if (!start_velocity_known)
+          nodes.start_velocity_and_acceleration(*current_points,
+                                                current_system->point_steps,
+                                                integrator.consistent_mass,
+                                                integrator.mass_regularisation,
+                                                start_velocity,
+                                                start_acceleration);
+        start_velocity_known = true;
+      }
+
       /** The number of local DoFs (owned and ghosts). */
       unsigned int
       n_local() const
@@ -547,10 +533,10 @@ namespace impm
       }
 
       /** The time integrator. */
-      const TimeIntegrator                 integrator;
-      const std::string                    initial_velocity_expression;
-      std::unique_ptr<FunctionParser<dim>> initial_velocity;
-      const BackgroundGrid<dim>           &grid;
+      const TimeIntegrator integrator;
+      /** The points' velocity at the start. */
+      const InitialVelocity<dim> initial_velocity;
+      const BackgroundGrid<dim> &grid;
       /** Whether a step was accepted (or the run resumed): the points
        *  carry accelerations. */
       bool   started   = false;
@@ -568,6 +554,12 @@ namespace impm
       NodalMomentum<dim> nodes;
       /** The stiffness-proportional damping (inactive at 0). */
       StiffnessDamping<dim> stiffness_damping;
+      /** The mass's ghost penalty (inactive at 0). */
+      MassGhostPenalty<dim> mass_ghost;
+      /** The nodes' velocity and acceleration of the attempt's start,
+       *  and whether compute_start_velocity() has set them. */
+      std::vector<double> start_velocity, start_acceleration;
+      bool                start_velocity_known = false;
       /** The residual of the step's start on the local DoFs (empty
        *  unless generalised-alpha). */
       std::vector<double> start_residual;

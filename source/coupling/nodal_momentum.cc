@@ -298,6 +298,34 @@ namespace impm
 
   template <int dim>
   void
+  NodalMomentum<dim>::start_velocity_and_acceleration(
+    const MaterialPoints<dim> &material_points,
+    const PointSteps<dim>     &steps,
+    const bool                 consistent,
+    const double               regularisation,
+    std::vector<double>       &velocity,
+    std::vector<double>       &acceleration) const
+  {
+    if (consistent)
+      {
+        consistent_velocity_and_acceleration(
+          material_points, steps, regularisation, velocity, acceleration);
+        return;
+      }
+    velocity.assign(n_local(), 0.);
+    acceleration.assign(n_local(), 0.);
+    for (unsigned int i = 0; i < n_local(); ++i)
+      if (mass(i) > 0.)
+        {
+          velocity[i]     = momentum(i) / mass(i);
+          acceleration[i] = mass_acceleration(i) / mass(i);
+        }
+  }
+
+
+
+  template <int dim>
+  void
   NodalMomentum<dim>::add_consistent_mass(
     const double                    c,
     const MaterialPoints<dim>      &material_points,

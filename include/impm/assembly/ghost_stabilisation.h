@@ -1,14 +1,13 @@
 #ifndef impm_assembly_ghost_stabilisation_h
 #define impm_assembly_ghost_stabilisation_h
 
-#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <impm/core/parameters.h>
 #include <impm/coupling/coupling.h>
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
-#include <impm/system/dense_block_adder.h>
+#include <impm/system/face_jump_penalty.h>
 
 #include <string>
 #include <vector>
@@ -63,23 +62,12 @@ namespace impm
   class GhostStabilisation : public Coupling<dim>
   {
   public:
-    /** @brief A face penalty, fixed during a load step. */
-    struct FacePenalty
-    {
-      /** Local indices (nodal vectors) of both cells' DoFs, ascending,
-       *  each once. */
-      std::vector<unsigned int> dofs;
-      /** The vector component of each of those DoFs. */
-      std::vector<unsigned char> components;
-      /** The penalty matrix on those DoFs (zero between components). */
-      FullMatrix<double> matrix;
-    };
-
     /**
      * @brief Constructor.
      * @param parameters The scene's "Ghost stabilisation" subsection.
      * @param grid The background grid.
-     * @param bodies The bodies: their stiffest material scales the penalty.
+     * @param bodies The bodies: their stiffest material scales the penalty
+     *   (gamma E h).
      */
     GhostStabilisation(const Parameters::Stabilisation &parameters,
                        const BackgroundGrid<dim>       &grid,
@@ -88,7 +76,8 @@ namespace impm
     /** @brief The coupling of a scene (Ghost stabilisation/Enabled). */
     explicit GhostStabilisation(const CouplingInputs<dim> &inputs);
 
-    /** @brief Choose the step's faces (choose_faces()); adds no rows. */
+    /** @brief Choose the step's faces (FaceJumpPenalty::choose_faces());
+     *  adds no rows. */
     unsigned int
     prepare(const MaterialPoints<dim> &material_points,
             const LoadStepSystem<dim> &system,
@@ -101,14 +90,13 @@ namespace impm
           const CouplingRows                                &rows,
           std::vector<std::vector<types::global_dof_index>> &blocks) override;
 
-    /** @brief The penalty forces (add_penalty_forces()). */
+    /** @brief The penalty forces of the increment. */
     void
     add_forces(const LoadStepSystem<dim> &system,
                const NodalVector         &increment,
                NodalVector               &internal_force) override;
 
-    /** @brief The penalty matrices (add_penalty_matrix()): constant over
-     *  the step. */
+    /** @brief The penalty matrices: constant over the step. */
     bool
     add_constant_matrix(const LoadStepSystem<dim>      &system,
                         TrilinosWrappers::SparseMatrix &matrix) override;
@@ -117,39 +105,12 @@ namespace impm
     std::vector<std::string>
     descriptions() const override;
 
-    /**
-     * @brief Choose this step's faces: between two locally owned or ghost
-     * cells whose DoFs are all touched by material, where either cell is
-     * filled to less than the threshold. Collective.
-     * @param material_points The points at the start of the step.
-     * @param touched For each local DoF, whether a point's support has it.
-     */
-    void
-    choose_faces(const MaterialPoints<dim> &material_points,
-                 const std::vector<bool>   &touched);
-
     /** @brief This step's face penalties. */
-    const std::vector<FacePenalty> &
+    const std::vector<typename FaceJumpPenalty<dim>::FacePenalty> &
     faces() const
     {
-      return face_penalties;
+      return penalty.faces();
     }
-
-    /**
-     * @brief Add the penalty forces of @p increment to @p internal_force
-     * (before its compress()).
-     */
-    void
-    add_penalty_forces(const NodalVector &increment,
-                       NodalVector       &internal_force) const;
-
-    /**
-     * @brief Add the penalty matrices to the system matrix (before its
-     * compress()).
-     */
-    void
-    add_penalty_matrix(const LoadStepSystem<dim>      &system,
-                       TrilinosWrappers::SparseMatrix &matrix) const;
 
     /** @brief A one-line description for the start-up report. */
     std::string
@@ -157,23 +118,8 @@ namespace impm
 
   private:
     const Parameters::Stabilisation parameters;
-    const BackgroundGrid<dim>      &grid;
-    /** The largest Young's modulus of the bodies. */
-    double                   modulus = 0.;
-    std::vector<FacePenalty> face_penalties;
-    /** Adds the faces' blocks to the matrix. */
-    mutable DenseBlockAdder block_adder;
-
-    /**
-     * @brief The penalty of a face from the matrix @p cell_matrix on the
-     * two cells' DoFs @p cell_dofs (those of the shared nodes twice), of
-     * vector components @p cell_components: each DoF once, its rows and
-     * columns summed.
-     */
-    static FacePenalty
-    merge_shared_dofs(const std::vector<unsigned int>  &cell_dofs,
-                      const std::vector<unsigned char> &cell_components,
-                      const FullMatrix<double>         &cell_matrix);
+    /** The faces and their matrices (gamma E h). */
+    FaceJumpPenalty<dim> penalty;
   };
 } // namespace impm
 

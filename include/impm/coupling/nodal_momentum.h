@@ -169,6 +169,22 @@ namespace impm
       std::vector<double>       &acceleration) const;
 
     /**
+     * @brief The nodes' velocity and acceleration of the step's start:
+     * the momentum and mass times acceleration over the lumped mass (zero
+     * where it is zero), or with @p consistent those of
+     * consistent_velocity_and_acceleration(). Collective if @p consistent.
+     * @param[out] velocity, acceleration On the local DoFs (owned and
+     *   ghosts).
+     */
+    void
+    start_velocity_and_acceleration(const MaterialPoints<dim> &material_points,
+                                    const PointSteps<dim>     &steps,
+                                    const bool                 consistent,
+                                    const double               regularisation,
+                                    std::vector<double>       &velocity,
+                                    std::vector<double> &acceleration) const;
+
+    /**
      * @brief Add @p c times the consistent mass matrix, @f$c \sum_p m_p
      * N_{Ip} N_{Jp}@f$ per axis, to @p matrix: one dense block per point
      * on its nodes' rows of the system (those of other processes through
