@@ -1,6 +1,7 @@
 // Rigid contact as a coupling (Coupling's functions that are not the
 // contact's own): its creation from the scene, its point state, the start
-// of an attempt, the matrix, the support it gives and its share of the
+// of an attempt, the contact of the step's start (for the start's
+// residual), the matrix, the support it gives and its share of the
 // load, and the registration. The probes and forces are in
 // rigid_contact.cc, the bodies' unknowns in rigid_contact_unknowns.cc.
 #include <impm/contact/rigid_contact.h>
@@ -35,6 +36,46 @@ namespace impm
                                    const StepSpan            &span)
   {
     begin(material_points, system, span.start, span.target);
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::add_start_forces(const LoadStepSystem<dim> &system,
+                                      const NodalVector &,
+                                      NodalVector &internal_force)
+  {
+    // evaluate() reads the bodies' poses of the attempt's end: set them to
+    // the start's for the evaluation, and back.
+    const auto end_displacement = displacement;
+    const auto end_rotation     = rotation;
+    const auto end_turn         = rotation_increment;
+    const auto end_increment    = displacement_increment;
+    displacement                = start_displacement;
+    rotation                    = start_rotation;
+    for (unsigned int b = 0; b < rigid_bodies.size(); ++b)
+      {
+        rotation_increment[b]     = unit_symmetric_tensor<dim>();
+        displacement_increment[b] = Tensor<1, dim>();
+      }
+    for (const Probe &start_probe : probes)
+      {
+        Probe probe = start_probe;
+        evaluate(probe, probe.start_position);
+        if (!probe.active)
+          continue;
+        const Tensor<1, dim>  force = probe.normal_force + probe.friction_force;
+        const PointStep<dim> &step  = system.point_steps[probe.point];
+        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            internal_force.local_element(step.dofs[v * dim + i]) -=
+              probe.weights[v] * force[i];
+      }
+    displacement           = end_displacement;
+    rotation               = end_rotation;
+    rotation_increment     = end_turn;
+    displacement_increment = end_increment;
   }
 
 

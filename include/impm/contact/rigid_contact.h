@@ -201,6 +201,19 @@ namespace impm
                const NodalVector         &increment,
                NodalVector               &internal_force) override;
 
+    /**
+     * @brief The contact of the step's start, for the residual of the
+     * start (generalised-alpha weighs it): each face where the step starts
+     * (the points unmoved) against each body where the step starts (its
+     * start displacement and rotation, the friction's traction of the step
+     * before); @p increment is not read. The probes' states are left as
+     * they are.
+     */
+    void
+    add_start_forces(const LoadStepSystem<dim> &system,
+                     const NodalVector         &increment,
+                     NodalVector               &internal_force) override;
+
     /** @brief An unknown of the bodies: a force-driven component. */
     struct Unknown
     {
