@@ -25,7 +25,8 @@ namespace impm
       "'Height'; an axisymmetric scene's 3D counterpart)" +
         (extra_shapes.empty() ?
            std::string(".") :
-           ", or " + extra_shapes.substr(1) + " (rigid bodies, 3D)."));
+           ", or, for rigid bodies, cone (3D, or its meridian plane in an "
+           "axisymmetric 2D grid) or stl (3D)."));
     prm.declare_entry("Lower corner",
                       "0, 0",
                       Patterns::List(Patterns::Double(), 2, 3),

@@ -31,11 +31,13 @@ namespace impm
     const std::string shape   = prm.get("Shape");
     const bool        is_cone = shape == "cone";
     const bool        stl     = shape == "stl";
-    if ((is_cone || stl) && dim != 3)
+    if (stl && dim != 3)
       Parameters::bad_value(name + "/Shape",
                             shape,
-                            std::string(is_cone ? "a cone" : "an STL surface") +
-                              " is 3D (in 2D, a polygon).");
+                            "an STL surface is 3D (in 2D, a polygon).");
+    if constexpr (dim == 2)
+      if (is_cone)
+        return std::make_unique<RigidConeProfile>(prm, name);
     if constexpr (dim == 3)
       {
         if (is_cone)

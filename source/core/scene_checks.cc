@@ -102,6 +102,12 @@ namespace impm
             "where it is, so the points must move (set it to true).");
         for (const auto &rigid_body : parameters.rigid_bodies)
           {
+            if (rigid_body.get_shape().needs_axisymmetry() &&
+                !grid.axisymmetric)
+              throw InputError(rigid_body.name +
+                               "/Shape = cone in 2D is the meridian plane of "
+                               "a cone: it needs 'Grid/Axisymmetric' = true "
+                               "(in plane strain, a polygon).");
             // A force-driven body's path is not known in advance (checked
             // when contact starts).
             bool force_driven = false;

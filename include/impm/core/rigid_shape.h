@@ -151,6 +151,17 @@ namespace impm
     }
 
     /**
+     * @brief Whether the shape is the meridian plane of a body of
+     * revolution, which only an axisymmetric grid makes (false unless
+     * overridden: a 2D cone).
+     */
+    virtual bool
+    needs_axisymmetry() const
+    {
+      return false;
+    }
+
+    /**
      * @brief The shape to probe instead when the body turns, or null for
      * this one (unless overridden): a box's exact face overlap holds for
      * faces parallel to its sides only, so a turning box is probed as a

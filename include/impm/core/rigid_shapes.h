@@ -228,6 +228,60 @@ namespace impm
 
 
   /**
+   * @brief A rigid cone on its shaft in the meridian plane of an
+   * axisymmetric grid (2D, x the radius): the profile of RigidCone, with
+   * the same proximity (the nearest edge of the profile, the normal
+   * turning with the point about a corner outside), so that an
+   * axisymmetric run and a 3D one probe the same shape. The tip lies on
+   * the axis (x = 0) and the axis points along +y or -y. Defined in
+   * rigid_cone.cc.
+   */
+  class RigidConeProfile final : public RigidShape<2>
+  {
+  public:
+    /** @brief Read the cone's entries (RigidCone::declare_parameters())
+     *  from the current subsection, Tip and Axis with two components; @p
+     *  name names the body in messages. */
+    RigidConeProfile(ParameterHandler &prm, const std::string &name);
+
+    /** @brief See RigidShape::proximity() (the facing is ignored). */
+    Proximity
+    proximity(const Point<2> &y, const Facing *facing) const override;
+
+    /** @brief The profile's box (both sides of the axis). */
+    std::pair<Point<2>, Point<2>>
+    bounding_box() const override;
+
+    /** @brief The profile on the side x >= 0. */
+    Surface
+    surface() const override;
+
+    /** @brief "cone (meridian plane) tip (t) axis ... ". */
+    std::string
+    description() const override;
+
+    /** @brief True. */
+    bool
+    needs_axisymmetry() const override
+    {
+      return true;
+    }
+
+  private:
+    /** The tip (on the axis). */
+    Point<2> tip;
+    /** +1 if the axis points along +y (from the tip to the base), -1 along
+     *  -y. */
+    double direction = 1.;
+    /** As RigidCone's. */
+    double radius = 0., height = 0., shaft_length = 0.;
+    /** As RigidCone's: (r, height above the tip), mirrored about the axis. */
+    std::vector<Point<2>> profile;
+  };
+
+
+
+  /**
    * @brief A closed triangulated surface (3D), read from an STL file
    * (TriangulatedSurface), or a turning box's sides. Defined in
    * rigid_triangulated_surface.cc.

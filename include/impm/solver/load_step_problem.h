@@ -210,6 +210,9 @@ namespace impm
     NodalVector external_force;
     /** Norm of the external force on the system's DoFs. */
     double external_force_norm = 0.;
+    /** The residual's reference of a step without loads: the internal
+     *  force of a strain of 1e-5 (set in begin()). */
+    double unloaded_reference = 0.;
 
     /**
      * @brief The stress update and the internal force with the couplings'
