@@ -299,6 +299,10 @@ namespace impm
                     // In axisymmetry the ring the Gauss point sweeps.
                     probe.area =
                       weight * face_area * grid.cartesian().ring_length(at);
+                    // In axisymmetry a Gauss point on the axis sweeps no
+                    // ring: no force, and a contact state of round-off.
+                    if (probe.area == 0.)
+                      continue;
                     if (probe.slot != numbers::invalid_unsigned_int)
                       for (unsigned int d = 0; d < dim; ++d)
                         probe.previous_traction[d] =

@@ -210,8 +210,9 @@ namespace impm
     NodalVector external_force;
     /** Norm of the external force on the system's DoFs. */
     double external_force_norm = 0.;
-    /** The residual's reference of a step without loads: the internal
-     *  force of a strain of 1e-5 (set in begin()). */
+    /** The residual's least reference of a step that nothing drives
+     *  (no load, no prescribed face moving): the internal force of a
+     *  strain of 1e-5 (set in begin(); 0 for a driven step). */
     double unloaded_reference = 0.;
 
     /**
