@@ -51,6 +51,17 @@ namespace impm
                            const StiffnessDamping<dim> &damping);
 
   /**
+   * @brief Why an explicit step of @p time_step is cut ("" if it is not):
+   * it is above @p limit, the stable step of the step's start at Courant
+   * number 1 (naming the smallest cell of @p grid and the speed of sound).
+   */
+  template <int dim>
+  std::string
+  explicit_step_refusal(const double              time_step,
+                        const double              limit,
+                        const CartesianGrid<dim> &grid);
+
+  /**
    * @brief One step of the central difference rule with the lumped mass
    * of @p nodes, from the residual of the step's start @p r (internal
    * minus external force, ghosted): the nodes' acceleration @f$a_I =
@@ -63,17 +74,6 @@ namespace impm
    * integrator's order), on the local DoFs of the system (zero
    * elsewhere). Collective.
    */
-  /**
-   * @brief Why an explicit step of @p time_step is cut ("" if it is not):
-   * it is above @p limit, the stable step of the step's start at Courant
-   * number 1 (naming the smallest cell of @p grid and the speed of sound).
-   */
-  template <int dim>
-  std::string
-  explicit_step_refusal(const double              time_step,
-                        const double              limit,
-                        const CartesianGrid<dim> &grid);
-
   template <int dim>
   void
   central_difference_step(const NodalMomentum<dim>  &nodes,

@@ -173,6 +173,11 @@ namespace impm
      * the momentum and mass times acceleration over the lumped mass (zero
      * where it is zero), or with @p consistent those of
      * consistent_velocity_and_acceleration(). Collective if @p consistent.
+     * @param material_points The points.
+     * @param steps The points' data of the step (their weights).
+     * @param consistent Whether the mass is consistent.
+     * @param regularisation With the consistent mass, the factor of the
+     *   lumped mass added to it.
      * @param[out] velocity, acceleration On the local DoFs (owned and
      *   ghosts).
      */

@@ -11,18 +11,6 @@ namespace impm
   using namespace dealii;
 
   /**
-   * @brief The stress of the previously converged formulation and its
-   * consistent tangent (the paper's eq. 10; formulation note, section 3).
-   *
-   * @f$\tilde P_{ij} = \tau_{im}\,\Delta F^{-1}_{jm} / J_n@f$ and
-   * @f$A_{ijkq} = \partial \tilde P_{ij}/\partial \Delta F_{kq}
-   *   = \frac{1}{J_n}[\mathcal C_{imkl}\Delta F^{-1}_{ql}\Delta F^{-1}_{jm}
-   *   - \tau_{im}\Delta F^{-1}_{qm}\Delta F^{-1}_{jk}]@f$, all for indices
-   * below @p dim (in plane strain the out-of-plane terms do not couple).
-   *
-   * @tparam dim Space dimension.
-   */
-  /**
    * @brief Axisymmetry: the entries of the tangent times the volume,
    * @f$A V^n@f$, that pair an in-plane index pair with the hoop pair
    * @f$\theta\theta@f$ (the rest of the tangent couples no hoop entry: in
@@ -44,6 +32,18 @@ namespace impm
     double hoop_by_hoop = 0.;
   };
 
+  /**
+   * @brief The stress of the previously converged formulation and its
+   * consistent tangent (the paper's eq. 10; formulation note, section 3).
+   *
+   * @f$\tilde P_{ij} = \tau_{im}\,\Delta F^{-1}_{jm} / J_n@f$ and
+   * @f$A_{ijkq} = \partial \tilde P_{ij}/\partial \Delta F_{kq}
+   *   = \frac{1}{J_n}[\mathcal C_{imkl}\Delta F^{-1}_{ql}\Delta F^{-1}_{jm}
+   *   - \tau_{im}\Delta F^{-1}_{qm}\Delta F^{-1}_{jk}]@f$, all for indices
+   * below @p dim (in plane strain the out-of-plane terms do not couple).
+   *
+   * @tparam dim Space dimension.
+   */
   template <int dim>
   struct PulledBackStress
   {

@@ -128,10 +128,10 @@ namespace impm
      *  residual (NewtonSolver::linear_tolerance): it was asked only to bring
      *  the residual below the tolerance, not to contract quadratically. */
     std::vector<bool> asked_for_tolerance_only;
-    /** NewtonOutcome::step_refused: the reason, and whether a smaller step
-     *  may pass (StepRefusal). */
+    /** NewtonOutcome::step_refused: the reason (StepRefusal). */
     std::string refusal;
-    bool        smaller_step_may_pass = true;
+    /** Whether a smaller step may pass (false: the run stops). */
+    bool smaller_step_may_pass = true;
 
     /** @brief The outcome's name, with the cause of a failed linear solve
      *  or the reason of a refused step. */
