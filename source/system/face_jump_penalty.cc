@@ -205,45 +205,48 @@ namespace impm
     std::vector<unsigned int>                                     local;
     std::vector<unsigned int>                                     row_offsets;
     for (const FacePenalty &face : face_penalties)
-      for (unsigned int component = 0; component < dim; ++component)
-        {
-          const FullMatrix<double> *face_matrix = &face.matrix;
-          if (factor != 1.)
-            {
-              scaled_matrix = face.matrix;
-              scaled_matrix *= factor;
-              face_matrix = &scaled_matrix;
-            }
-          entries.clear();
-          for (unsigned int i = 0; i < face.dofs.size(); ++i)
-            {
-              const auto row = system.system_index(face.dofs[i]);
-              if (row != numbers::invalid_dof_index &&
-                  face.components[i] == component)
-                entries.emplace_back(row, i);
-            }
-          if (entries.empty())
-            continue;
-          std::sort(entries.begin(), entries.end());
-          rows.resize(entries.size());
-          local.resize(entries.size());
-          for (unsigned int k = 0; k < entries.size(); ++k)
-            {
-              rows[k]  = entries[k].first;
-              local[k] = entries[k].second;
-            }
-          // The face's matrix is row-major.
-          row_offsets.resize(entries.size());
-          for (unsigned int k = 0; k < entries.size(); ++k)
-            row_offsets[k] = local[k] * face_matrix->n();
-          block_adder.add(rows.data(),
-                          rows.size(),
-                          StoredBlock{&(*face_matrix)(0, 0),
-                                      row_offsets.data(),
-                                      local.data()},
-                          matrix,
-                          system.off_process_rows);
-        }
+      {
+        // The face's matrix, times the factor once for all components.
+        const FullMatrix<double> *face_matrix = &face.matrix;
+        if (factor != 1.)
+          {
+            scaled_matrix = face.matrix;
+            scaled_matrix *= factor;
+            face_matrix = &scaled_matrix;
+          }
+        for (unsigned int component = 0; component < dim; ++component)
+          {
+            entries.clear();
+            for (unsigned int i = 0; i < face.dofs.size(); ++i)
+              {
+                const auto row = system.system_index(face.dofs[i]);
+                if (row != numbers::invalid_dof_index &&
+                    face.components[i] == component)
+                  entries.emplace_back(row, i);
+              }
+            if (entries.empty())
+              continue;
+            std::sort(entries.begin(), entries.end());
+            rows.resize(entries.size());
+            local.resize(entries.size());
+            for (unsigned int k = 0; k < entries.size(); ++k)
+              {
+                rows[k]  = entries[k].first;
+                local[k] = entries[k].second;
+              }
+            // The face's matrix is row-major.
+            row_offsets.resize(entries.size());
+            for (unsigned int k = 0; k < entries.size(); ++k)
+              row_offsets[k] = local[k] * face_matrix->n();
+            block_adder.add(rows.data(),
+                            rows.size(),
+                            StoredBlock{&(*face_matrix)(0, 0),
+                                        row_offsets.data(),
+                                        local.data()},
+                            matrix,
+                            system.off_process_rows);
+          }
+      }
   }
 
 
