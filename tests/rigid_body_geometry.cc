@@ -147,6 +147,72 @@ namespace
       }
     return largest_difference / largest_entry;
   }
+  /**
+   * The cone in the meridian plane of an axisymmetric grid (2D, x the
+   * radius) against @p cone (3D, tip (0, 0, 0), axis z, height 1, radius
+   * 0.5, shaft 0.5): its proximity is the 3D cone's in the plane through
+   * the axis, (r, z) -> (r, 0, z), and with the axis along -y (tip (0, 2))
+   * the same mirrored, (r, 2 - z), the normal's y component turned over.
+   */
+  void
+  check_meridian_cones(const RigidBody<3> &cone)
+  {
+    const auto meridian = make_body<2>({{"Shape", "cone"},
+                                        {"Tip", "0, 0"},
+                                        {"Axis", "0, 1"},
+                                        {"Cone height", "1"},
+                                        {"Cone radius", "0.5"},
+                                        {"Shaft length", "0.5"}});
+    const auto flipped  = make_body<2>({{"Shape", "cone"},
+                                        {"Tip", "0, 2"},
+                                        {"Axis", "0, -1"},
+                                        {"Cone height", "1"},
+                                        {"Cone radius", "0.5"},
+                                        {"Shaft length", "0.5"}});
+    std::cout << std::fixed;
+    print("meridian cone 1", meridian, Point<2>(0.1, 0.6));
+    print("meridian cone 2", meridian, Point<2>(0.6, 1.2));
+    print("flipped meridian cone 1", flipped, Point<2>(0.1, 1.4));
+    std::cout << std::defaultfloat;
+    double                largest = 0.;
+    unsigned int          n       = 0;
+    std::vector<Point<2>> off_corners;
+    // Off the axis, where the two sides of the profile tie inside (the
+    // normal's direction is then either's).
+    for (double r = 0.0375; r <= 0.9; r += 0.0375)
+      for (double z = -0.4; z <= 1.9; z += 0.0375)
+        {
+          const auto in_3d = cone.proximity(Point<3>(r, 0., z), Point<3>());
+          const auto in_2d = meridian.proximity(Point<2>(r, z), Point<2>());
+          const auto mirrored =
+            flipped.proximity(Point<2>(r, 2. - z), Point<2>());
+          for (const double difference : {in_2d.gap - in_3d.gap,
+                                          in_2d.normal[0] - in_3d.normal[0],
+                                          in_2d.normal[1] - in_3d.normal[2],
+                                          mirrored.gap - in_3d.gap,
+                                          mirrored.normal[0] - in_3d.normal[0],
+                                          mirrored.normal[1] + in_3d.normal[2]})
+            largest = std::max(largest, std::abs(difference));
+          ++n;
+          off_corners.push_back(Point<2>(r + 0.0011, z + 0.0013));
+        }
+    std::cout << "meridian cones against the 3D cone at " << n
+              << " points of the plane" << std::endl;
+    impm_tests::check_below("meridian cones: largest difference of the gap "
+                            "and the normal",
+                            largest,
+                            1e-14);
+    impm_tests::check_below("meridian cone: normal derivative against "
+                            "central differences",
+                            derivative_difference(meridian, off_corners),
+                            1e-6);
+    std::vector<Point<2>> flipped_points;
+    for (const auto &x : off_corners)
+      flipped_points.push_back(Point<2>(x[0], 2. - x[1]));
+    impm_tests::check_below("flipped meridian cone: the same",
+                            derivative_difference(flipped, flipped_points),
+                            1e-6);
+  }
 } // namespace
 
 int
@@ -210,67 +276,7 @@ main()
                                                  Point<2>(1.2, 0.8)}),
                           1e-6);
 
-  // The cone in the meridian plane of an axisymmetric grid (2D, x the
-  // radius): its proximity is the 3D cone's in the plane through the axis,
-  // (r, z) -> (r, 0, z), and with the axis along -y (tip (0, 2)) the same
-  // mirrored, (r, 2 - z), the normal's y component turned over.
-  {
-    const auto meridian = make_body<2>({{"Shape", "cone"},
-                                        {"Tip", "0, 0"},
-                                        {"Axis", "0, 1"},
-                                        {"Cone height", "1"},
-                                        {"Cone radius", "0.5"},
-                                        {"Shaft length", "0.5"}});
-    const auto flipped  = make_body<2>({{"Shape", "cone"},
-                                        {"Tip", "0, 2"},
-                                        {"Axis", "0, -1"},
-                                        {"Cone height", "1"},
-                                        {"Cone radius", "0.5"},
-                                        {"Shaft length", "0.5"}});
-    std::cout << std::fixed;
-    print("meridian cone 1", meridian, Point<2>(0.1, 0.6));
-    print("meridian cone 2", meridian, Point<2>(0.6, 1.2));
-    print("flipped meridian cone 1", flipped, Point<2>(0.1, 1.4));
-    std::cout << std::defaultfloat;
-    double                largest = 0.;
-    unsigned int          n       = 0;
-    std::vector<Point<2>> off_corners;
-    // Off the axis, where the two sides of the profile tie inside (the
-    // normal's direction is then either's).
-    for (double r = 0.0375; r <= 0.9; r += 0.0375)
-      for (double z = -0.4; z <= 1.9; z += 0.0375)
-        {
-          const auto in_3d = cone.proximity(Point<3>(r, 0., z), Point<3>());
-          const auto in_2d = meridian.proximity(Point<2>(r, z), Point<2>());
-          const auto mirrored =
-            flipped.proximity(Point<2>(r, 2. - z), Point<2>());
-          for (const double difference : {in_2d.gap - in_3d.gap,
-                                          in_2d.normal[0] - in_3d.normal[0],
-                                          in_2d.normal[1] - in_3d.normal[2],
-                                          mirrored.gap - in_3d.gap,
-                                          mirrored.normal[0] - in_3d.normal[0],
-                                          mirrored.normal[1] + in_3d.normal[2]})
-            largest = std::max(largest, std::abs(difference));
-          ++n;
-          off_corners.push_back(Point<2>(r + 0.0011, z + 0.0013));
-        }
-    std::cout << "meridian cones against the 3D cone at " << n
-              << " points of the plane" << std::endl;
-    impm_tests::check_below("meridian cones: largest difference of the gap "
-                            "and the normal",
-                            largest,
-                            1e-14);
-    impm_tests::check_below("meridian cone: normal derivative against "
-                            "central differences",
-                            derivative_difference(meridian, off_corners),
-                            1e-6);
-    std::vector<Point<2>> flipped_points;
-    for (const auto &x : off_corners)
-      flipped_points.push_back(Point<2>(x[0], 2. - x[1]));
-    impm_tests::check_below("flipped meridian cone: the same",
-                            derivative_difference(flipped, flipped_points),
-                            1e-6);
-  }
+  check_meridian_cones(cone);
 
   // STL surfaces.
   {

@@ -132,12 +132,7 @@ namespace impm
                                       const NodalVector &increment,
                                       NodalVector       &internal_force)
   {
-    penalty.add_forces(
-      make_array_view(increment.begin(),
-                      increment.begin() + increment.locally_owned_size() +
-                        increment.get_partitioner()->n_ghost_indices()),
-      1.,
-      internal_force);
+    penalty.add_forces(increment, 1., internal_force);
   }
 
 

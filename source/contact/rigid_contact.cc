@@ -436,13 +436,26 @@ namespace impm
                         probe.piece != was_piece;
         if (!probe.active)
           continue;
-        const Tensor<1, dim> force = probe.normal_force + probe.friction_force;
-        force_on_material[probe.body] += force;
-        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-          for (unsigned int i = 0; i < dim; ++i)
-            internal_force.local_element(step.dofs[v * dim + i]) -=
-              probe.weights[v] * force[i];
+        force_on_material[probe.body] +=
+          probe.normal_force + probe.friction_force;
+        subtract_probe_force(probe, system, internal_force);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::subtract_probe_force(const Probe               &probe,
+                                          const LoadStepSystem<dim> &system,
+                                          NodalVector &internal_force) const
+  {
+    const PointStep<dim> &step  = system.point_steps[probe.point];
+    const Tensor<1, dim>  force = probe.normal_force + probe.friction_force;
+    for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+      for (unsigned int i = 0; i < dim; ++i)
+        internal_force.local_element(step.dofs[v * dim + i]) -=
+          probe.weights[v] * force[i];
   }
 
 

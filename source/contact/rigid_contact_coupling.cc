@@ -63,14 +63,8 @@ namespace impm
       {
         Probe probe = start_probe;
         evaluate(probe, probe.start_position);
-        if (!probe.active)
-          continue;
-        const Tensor<1, dim>  force = probe.normal_force + probe.friction_force;
-        const PointStep<dim> &step  = system.point_steps[probe.point];
-        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-          for (unsigned int i = 0; i < dim; ++i)
-            internal_force.local_element(step.dofs[v * dim + i]) -=
-              probe.weights[v] * force[i];
+        if (probe.active)
+          subtract_probe_force(probe, system, internal_force);
       }
     displacement           = end_displacement;
     rotation               = end_rotation;

@@ -218,9 +218,8 @@ namespace impm
         nodes.map_points(material_points, system);
         stiffness_damping.begin_step(material_points, system.point_steps);
         start_residual.clear();
-        start_velocity_known = false;
-        current_points       = &material_points;
-        current_system       = &system;
+        current_points = &material_points;
+        current_system = &system;
         const MPI_Comm communicator =
           grid.get_triangulation().get_communicator();
         if (integrator.is_explicit())
@@ -441,7 +440,16 @@ namespace impm
             // (owned and ghost DoFs: the points read both).
             std::vector<double> new_acceleration(n_local()),
               new_velocity(n_local()), velocity_change(n_local());
-            compute_start_velocity();
+            // The start's nodal velocity and acceleration: the momentum
+            // over the mass, lumped or consistent.
+            std::vector<double> start_velocity, start_acceleration;
+            nodes.start_velocity_and_acceleration(
+              material_points,
+              steps,
+              integrator.consistent_mass,
+              integrator.mass_regularisation,
+              start_velocity,
+              start_acceleration);
             for (unsigned int i = 0; i < n_local(); ++i)
               {
                 const double v = start_velocity[i];
@@ -510,21 +518,6 @@ namespace impm
       }
 
     private:
-      /** The nodes' start velocity and acceleration of this attempt, once
-       *  (NodalMomentum::start_velocity_and_acceleration()). Collective. */
-      void
-      compute_start_velocity()
-      {
-        if (!start_velocity_known)
-          nodes.start_velocity_and_acceleration(*current_points,
-                                                current_system->point_steps,
-                                                integrator.consistent_mass,
-                                                integrator.mass_regularisation,
-                                                start_velocity,
-                                                start_acceleration);
-        start_velocity_known = true;
-      }
-
       /** The number of local DoFs (owned and ghosts). */
       unsigned int
       n_local() const
@@ -556,10 +549,6 @@ namespace impm
       StiffnessDamping<dim> stiffness_damping;
       /** The mass's ghost penalty (inactive at 0). */
       MassGhostPenalty<dim> mass_ghost;
-      /** The nodes' velocity and acceleration of the attempt's start,
-       *  and whether compute_start_velocity() has set them. */
-      std::vector<double> start_velocity, start_acceleration;
-      bool                start_velocity_known = false;
       /** The residual of the step's start on the local DoFs (empty
        *  unless generalised-alpha). */
       std::vector<double> start_residual;

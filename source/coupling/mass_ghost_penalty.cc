@@ -91,12 +91,7 @@ namespace impm
                                     NodalVector       &force) const
   {
     if (penalty)
-      penalty->add_forces(
-        make_array_view(increment.begin(),
-                        increment.begin() + increment.locally_owned_size() +
-                          increment.get_partitioner()->n_ghost_indices()),
-        factor(time_step),
-        force);
+      penalty->add_forces(increment, factor(time_step), force);
   }
 
 

@@ -171,9 +171,9 @@ namespace impm
 
   template <int dim>
   void
-  FaceJumpPenalty<dim>::add_forces(const ArrayView<const double> &values,
-                                   const double                   factor,
-                                   NodalVector                   &force) const
+  FaceJumpPenalty<dim>::add_forces(const NodalVector &values,
+                                   const double       factor,
+                                   NodalVector       &force) const
   {
     Vector<double> face_values, face_force;
     for (const FacePenalty &face : face_penalties)
@@ -181,7 +181,7 @@ namespace impm
         face_values.reinit(face.dofs.size());
         face_force.reinit(face.dofs.size());
         for (unsigned int i = 0; i < face.dofs.size(); ++i)
-          face_values[i] = values[face.dofs[i]];
+          face_values[i] = values.local_element(face.dofs[i]);
         face.matrix.vmult(face_force, face_values);
         for (unsigned int i = 0; i < face.dofs.size(); ++i)
           force.local_element(face.dofs[i]) += factor * face_force[i];

@@ -421,6 +421,13 @@ namespace impm
     void
     evaluate(Probe &probe, const Point<dim> &position) const;
 
+    /** @brief Subtract @p probe's force on the material (normal and
+     *  friction) from @p internal_force at its point's nodes. */
+    void
+    subtract_probe_force(const Probe               &probe,
+                         const LoadStepSystem<dim> &system,
+                         NodalVector               &internal_force) const;
+
     /** @brief The corners of body @p b's own box displaced by @p
      *  displacement and turned by @p rotation. */
     std::vector<Point<dim>>

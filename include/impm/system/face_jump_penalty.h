@@ -1,8 +1,6 @@
 #ifndef impm_system_face_jump_penalty_h
 #define impm_system_face_jump_penalty_h
 
-#include <deal.II/base/array_view.h>
-
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
@@ -96,14 +94,13 @@ namespace impm
                std::vector<std::vector<types::global_dof_index>> &blocks) const;
 
     /**
-     * @brief Add @p factor times the penalty of the field @p values (one
-     * value per local DoF, owned then ghost) to @p force (before its
-     * compress()).
+     * @brief Add @p factor times the penalty of the nodal field @p values
+     * (ghosted) to @p force (before its compress()).
      */
     void
-    add_forces(const ArrayView<const double> &values,
-               const double                   factor,
-               NodalVector                   &force) const;
+    add_forces(const NodalVector &values,
+               const double       factor,
+               NodalVector       &force) const;
 
     /**
      * @brief Add @p factor times the penalty matrices to the system matrix
