@@ -21,13 +21,18 @@
 #     in the start residual it was kicked by a penalty force of the step's
 #     whole push: 152 steps and cuts to reach 25 % of the push, the force
 #     falling to 0 and back (the block bounced), and tunnelling refusals;
-#  2. Newmark (the trapezoidal rule) over the first 20 steps: the first
-#     step's acceleration comes from the balance at the start, now with the
-#     plate where it starts (no force: the block starts at rest); the force
-#     within 3 % of the quasi-static one at the 10th to 20th steps (2.2 %
-#     at most). With the plate's end pose the block started with the
-#     acceleration of the first step's whole push and left the plate (the
-#     force 0 at the 10th and 20th steps).
+#  2. Newmark (the trapezoidal rule): the first step's acceleration comes
+#     from the balance at the start, now with the plate where it starts (no
+#     force: the block starts at rest); every step converges without a cut
+#     and the force is within 3 % of the quasi-static one from the 10th
+#     step (2.2 % at most). With the plate's end pose the block started
+#     with the acceleration of the first step's whole push and left the
+#     plate (the force 0 at the 10th and 20th steps). Its residual is
+#     measured against the internal force too (no load drives the step):
+#     against the inertial force alone, far below the block's stresses'
+#     forces in this slow push, Newton stalled at a relative residual of
+#     1.5e-9 to 3e-9 at 83 % of the push (and generalised-alpha at 40 %
+#     once round-off moved by 1e-16).
 # Usage: contact_start_pose.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -41,8 +46,7 @@ run() { # run NAME [--set ...]
 run static
 run generalised_alpha --set "Inertia/Enabled=true" --set "Time/End time=10" \
   --set "Inertia/Integrator=generalised-alpha"
-run newmark --set "Inertia/Enabled=true" --set "Time/End time=2" --set "Solver/Load steps=20" \
-  --set "Time/Load factor=t/10"
+run newmark --set "Inertia/Enabled=true" --set "Time/End time=10"
 /usr/bin/python3 - <<'PY' || fail "the dynamic plate does not follow the quasi-static one"
 import csv, sys
 def forces(name):
@@ -60,7 +64,7 @@ worst = max(abs(f - exact(load)) / exact(load) for load, f in static.items() if 
 print("static: the plate's force within 1e-2 of the exact uniaxial force at every step: %s (%.2e)"
       % ("yes" if worst < 1e-2 else "NO", worst))
 ok = worst < 1e-2
-for name, n_steps, limit in (("generalised_alpha", 100, 0.01), ("newmark", 20, 0.03)):
+for name, n_steps, limit in (("generalised_alpha", 100, 0.01), ("newmark", 100, 0.03)):
     dynamic, n = forces(name)
     # From the 10th step (1 s) on: the plate starts at speed, an impact the
     # steps of 0.1 s (about the block's period) resolve as a transient

@@ -211,14 +211,19 @@ namespace impm
         global_residual = couplings.global_residuals();
         norm            = std::hypot(norm, global_residual.l2_norm());
       }
-    // With neither loads nor a coupling's force, the internal force (the
-    // reactions of a prescribed motion); in a step that no prescribed face
-    // drives either, at least that of a strain of 1e-5 (begin()): an
-    // unloaded body whose stresses are round-off (F-bar's volume ratio of
-    // an unmoved patch, 1 to 1e-16) has round-off forces, which no
-    // iteration lowers relative to themselves.
-    if (reference == 0.)
-      reference = std::max(internal_force.l2_norm(), unloaded_reference);
+    // Without loads, the internal force joins the couplings' forces (the
+    // reactions of a prescribed motion, or the elastic force that an
+    // inertial force balances: a body pushed slowly with inertia has an
+    // inertial force far below its stresses' forces, whose round-off it
+    // could not resolve). With neither loads nor a coupling's force, in a
+    // step that nothing drives, at least the force of a strain of 1e-5
+    // (begin()): an unloaded body whose stresses are round-off (F-bar's
+    // volume ratio of an unmoved patch, 1 to 1e-16) has round-off forces,
+    // which no iteration lowers relative to themselves.
+    if (external_force_norm == 0.)
+      reference = reference > 0. ?
+                    std::hypot(reference, internal_force.l2_norm()) :
+                    std::max(internal_force.l2_norm(), unloaded_reference);
     if (reference == 0.)
       reference = 1.;
     residual.contact_changed     = couplings.state_changed();
