@@ -19,7 +19,7 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <impm/mechanics/material.h>
+#include <impm/mechanics/spectral_decomposition.h>
 
 #include <algorithm>
 #include <iostream>

@@ -234,60 +234,6 @@ namespace impm
 
 
 
-  namespace
-  {
-    /**
-     * The spectral decomposition of a tensor whose third axis is a principal
-     * axis (plane strain and axisymmetry): the in-plane block's in closed
-     * form (the eigenvalues m +- R about the mean m, the first eigenvector
-     * at half the angle atan2(2 t_xy, t_xx - t_yy)), the third eigenvalue
-     * t_zz; sorted in descending order.
-     */
-    std::array<std::pair<double, Tensor<1, 3>>, 3>
-    block_spectral_decomposition(const SymmetricTensor<2, 3> &tensor)
-    {
-      const double mean   = 0.5 * (tensor[0][0] + tensor[1][1]);
-      const double half   = 0.5 * (tensor[0][0] - tensor[1][1]);
-      const double radius = std::hypot(half, tensor[0][1]);
-      const double angle  = 0.5 * std::atan2(tensor[0][1], half);
-      const double c = std::cos(angle), s = std::sin(angle);
-      std::array<std::pair<double, Tensor<1, 3>>, 3> eigen;
-      eigen[0].first     = mean + radius;
-      eigen[0].second[0] = c;
-      eigen[0].second[1] = s;
-      eigen[1].first     = mean - radius;
-      eigen[1].second[0] = -s;
-      eigen[1].second[1] = c;
-      eigen[2].first     = tensor[2][2];
-      eigen[2].second[2] = 1.;
-      // Insert the third axis at its place in the descending order.
-      if (eigen[2].first > eigen[1].first)
-        std::swap(eigen[1], eigen[2]);
-      if (eigen[1].first > eigen[0].first)
-        std::swap(eigen[0], eigen[1]);
-      return eigen;
-    }
-  } // namespace
-
-
-
-  std::array<std::pair<double, Tensor<1, 3>>, 3>
-  spectral_decomposition(const SymmetricTensor<2, 3> &tensor)
-  {
-    if (tensor[0][2] == 0. && tensor[1][2] == 0.)
-      return block_spectral_decomposition(tensor);
-    try
-      {
-        return eigenvectors(tensor);
-      }
-    catch (const ExceptionBase &)
-      {
-        return eigenvectors(tensor, SymmetricTensorEigenvectorMethod::jacobi);
-      }
-  }
-
-
-
   double
   elastic_energy_density(const ConstitutiveUpdate &update)
   {

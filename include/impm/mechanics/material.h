@@ -8,6 +8,7 @@
 
 #include <impm/base/plugin_list.h>
 #include <impm/base/point_field.h>
+#include <impm/mechanics/spectral_decomposition.h>
 
 #include <array>
 #include <functional>
@@ -53,21 +54,6 @@ namespace impm
      */
     double hardening_variable = 0.;
   };
-
-  /**
-   * @brief The eigenvalues and unit eigenvectors of @p tensor, in
-   * descending order of the eigenvalues.
-   *
-   * A tensor whose third axis is principal (t_xz = t_yz = 0: every tensor
-   * of plane strain and axisymmetry) is decomposed in closed form, without
-   * iteration. Any other by deal.II's default (hybrid) algorithm, and
-   * Jacobi's where that one does not converge: its QL iteration fails on
-   * tensors within round-off of a multiple of the identity (a trial strain
-   * of 1e-8, the first step of a small load), which would otherwise fail a
-   * Newton iteration that is fine.
-   */
-  std::array<std::pair<double, Tensor<1, 3>>, 3>
-  spectral_decomposition(const SymmetricTensor<2, 3> &tensor);
 
   /**
    * @brief The elastic energy per unit reference volume of an update,
