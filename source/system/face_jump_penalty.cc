@@ -85,10 +85,11 @@ namespace impm
             if (cell->at_boundary(f))
               continue;
             const auto neighbor = cell->neighbor(f);
-            // Each face once: by the lower cell id between owned cells, by
-            // the lower rank across processes.
+            // Each face once: by the lower active cell index between owned
+            // cells (a CellId, built from the cell's ancestry, took 3 % of
+            // an explicit run), by the lower rank across processes.
             if (neighbor->is_locally_owned() ?
-                  !(cell->id() < neighbor->id()) :
+                  cell->active_cell_index() > neighbor->active_cell_index() :
                   cell->subdomain_id() > neighbor->subdomain_id())
               continue;
             if (std::min(fill[cell->active_cell_index()],
