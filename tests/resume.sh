@@ -9,7 +9,7 @@
 #     same final summary, steps.csv and newton.csv (numdiff at the suite's
 #     tolerances), and a .pvd naming each point file once;
 #  3. on one process only: killed with SIGKILL at four moments drawn with a
-#     fixed seed (0 to 0.15 s after the run has done a step), resumed after each kill (started afresh if no checkpoint
+#     fixed seed (0 to 0.15 s after the run has done two steps), resumed after each kill (started afresh if no checkpoint
 #     was complete yet) and finally run to the end: the same final summary,
 #     and every point file complete and readable by VTK's XML readers;
 #  4. on MPIEXEC N processes only: stopped and resumed on N processes, the
@@ -55,8 +55,11 @@ if [ ${#launcher[@]} -eq 0 ]; then
   rm -rf results
   RANDOM=2026
   for kill in 1 2 3 4; do
-    # 0 to 0.15 s after the run has done a step (its start-up, MPI's
-    # included, takes about 0.7 s here, its 40 steps about 0.6 s).
+    # 0 to 0.15 s after the run has done two steps of its own (its start-up,
+    # MPI's included, takes about 0.7 s here, its 40 steps about 0.6 s):
+    # the first one's checkpoint is then complete. After one step only, on
+    # a machine slowed by other work, all four kills came before the first
+    # checkpoint was written, and the resume was never tried.
     delay=$(printf '0.%02d' $((RANDOM % 15)))
     if [ -f results/checkpoint/state.txt ] || [ -f results/checkpoint.old/state.txt ]; then
       mode=(--resume)
@@ -70,14 +73,14 @@ if [ ${#launcher[@]} -eq 0 ]; then
     pid=$!
     # steps.csv is cut back to the checkpoint and grows by a row per step.
     for _ in $(seq 300); do
-      [ -f results/steps.csv ] && [ "$(wc -l < results/steps.csv)" -gt $((rows + 1)) ] && break
+      [ -f results/steps.csv ] && [ "$(wc -l < results/steps.csv)" -gt $((rows + 2)) ] && break
       kill -0 $pid 2> /dev/null || break
       sleep 0.1
     done
     sleep "$delay"
     kill -KILL $pid 2> /dev/null
     wait $pid 2> /dev/null
-    echo "kill $kill $delay s after a step of its own (${mode[*]}): steps.csv $rows -> $(wc -l < results/steps.csv) rows" >> kills.txt
+    echo "kill $kill $delay s after two steps of its own (${mode[*]}): steps.csv $rows -> $(wc -l < results/steps.csv) rows" >> kills.txt
   done
   [ -f results/checkpoint/state.txt ] || [ -f results/checkpoint.old/state.txt ] ||
     { cat kills.txt; fail "no checkpoint was complete after four kills"; }
