@@ -17,9 +17,9 @@ namespace impm
    *
    * A tensor whose third axis is principal (t_xz = t_yz = 0: every tensor
    * of plane strain and axisymmetry) is decomposed in closed form, without
-   * iteration. Any other by deal.II's default (hybrid) algorithm, and
-   * Jacobi's where that one does not converge: its QL iteration fails on
-   * tensors within round-off of a multiple of the identity (a trial strain
+   * iteration. Any other by deal.II's default algorithm (QL iteration with
+   * implicit shifts), and Jacobi's where that one does not converge: it fails
+   * on tensors within round-off of a multiple of the identity (a trial strain
    * of 1e-8, the first step of a small load), which would otherwise fail a
    * Newton iteration that is fine.
    */
