@@ -1,5 +1,6 @@
-// A rigid cone on a cylindrical shaft (RigidCone, 3D): its entries, and its
-// profile's proximity turned about the axis.
+// A rigid cone on a cylindrical shaft: its entries; in 3D (RigidCone) its
+// profile's proximity turned about the axis, in the meridian plane of an
+// axisymmetric grid (RigidConeProfile) the profile's own.
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <impm/core/parameters.h>

@@ -200,8 +200,6 @@ namespace impm
       coupling->add_row_residuals(row_residuals);
     double norm =
       system.set_residual(external_force, internal_force, row_residuals);
-    // Without external loads (a prescribed displacement), the residual is
-    // measured against the internal forces, which carry the reactions.
     double reference = external_force_norm;
     for (const auto &coupling : couplings.list())
       if (const double force = coupling->reference_force(); force > 0.)
@@ -220,16 +218,17 @@ namespace impm
     // (begin()): an unloaded body whose stresses are round-off (F-bar's
     // volume ratio of an unmoved patch, 1 to 1e-16) has round-off forces,
     // which no iteration lowers relative to themselves.
+    const double internal_force_norm = internal_force.l2_norm();
     if (external_force_norm == 0.)
       reference = reference > 0. ?
-                    std::hypot(reference, internal_force.l2_norm()) :
-                    std::max(internal_force.l2_norm(), unloaded_reference);
+                    std::hypot(reference, internal_force_norm) :
+                    std::max(internal_force_norm, unloaded_reference);
     if (reference == 0.)
       reference = 1.;
     residual.contact_changed     = couplings.state_changed();
     residual.relative            = norm / reference;
     residual.norm                = norm;
-    residual.internal_force_norm = internal_force.l2_norm();
+    residual.internal_force_norm = internal_force_norm;
     return residual;
   }
 
