@@ -190,7 +190,6 @@ expect disc_in_3d "'Body 1/Shape' = 'disc' is not allowed: in 3D only box, spher
 expect axisymmetric_3d "'Grid/Axisymmetric' = 'true' is not allowed: axisymmetry is a 2D option" - -- "$(dirname "$base")/column_3d_gimp_plastic_8.prm" --set "Grid/Axisymmetric=true"
 expect axisymmetric_negative_radius "'Grid/Lower corner' = '-1, 0' is not allowed: with Axisymmetric = true x is the radius" - -- "$base" --set "Grid/Axisymmetric=true" --set "Grid/Lower corner=-1, 0"
 expect axisymmetric_axis_free "'Grid/Condition x-' = 'none' is not allowed: the grid reaches the axis" also_parallel -- "$base" --set "Grid/Axisymmetric=true" --set "Grid/Condition x-=none"
-expect axisymmetric_updated_lagrangian "Solver/Formulation = updated Lagrangian is not yet available with Grid/Axisymmetric = true" - -- "$base" --set "Grid/Axisymmetric=true" --set "Solver/Formulation=updated Lagrangian"
 plus cone_2d.prm "set Number of rigid bodies = 1\nsubsection Rigid body 1\n set Shape = cone\nend"
 expect cone_in_plane_strain "Rigid body 1/Shape = cone in 2D is the meridian plane of a cone: it needs 'Grid/Axisymmetric' = true" - -- "$work/cone_2d.prm"
 expect cone_tip_off_axis "'Rigid body 1/Tip' = '0.5, 2' is not allowed: a cone in 2D is the meridian plane of an axisymmetric one: its tip lies on the axis, x = 0" - -- "$work/cone_2d.prm" --set "Grid/Axisymmetric=true" --set "Rigid body 1/Tip=0.5, 2"

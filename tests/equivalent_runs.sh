@@ -45,6 +45,12 @@
 #     the 3D block of f_bar_tangent_3d, elastic and made of von Mises
 #     (rho_y = 20 kPa, plastic beneath the corner), print what they print
 #     with the mean volume change.
+# 10. In axisymmetry too the updated Lagrangian form gives the iterates of
+#     the previously converged one (the hoop weights mapped to the current
+#     radius, the spatial tangent's hoop entries): the Drucker-Prager layer
+#     under a plate, F-bar and F-bar with cell pressures on their squeezed
+#     cylinders (each with its matrix checked against central differences
+#     of the internal force), and the cylinder under its own weight.
 # Values are compared with numdiff at the suite's tolerances.
 # Usage: equivalent_runs.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
 tests=$2
@@ -161,4 +167,14 @@ for material in elastic von_mises; do
   compare block_pressures_state.txt block_mean_state.txt \
     "cell pressures differ from the mean volume change on the $material 3D block"
 done
-echo "equivalent_runs: the ten pairs of runs agree"
+for scene in axisymmetric_tangent_plastic f_bar_axisymmetric_tangent \
+             f_bar_pressure_tangent_axisymmetric axisymmetric_cylinder; do
+  run $scene
+  "${launcher[@]}" "$impm" "$tests/$scene.prm" --overwrite \
+    --set "Solver/Formulation=updated Lagrangian" > ${scene}_ul.txt 2> /dev/null ||
+    fail "$scene did not run in the updated Lagrangian form"
+  grep -q "^material points: " ${scene}_ul.txt || fail "$scene printed no summary"
+  compare ${scene}_ul.txt $scene.txt \
+    "in axisymmetry the updated Lagrangian form differs from the previously converged one ($scene)"
+done
+echo "equivalent_runs: every pair of runs agrees"

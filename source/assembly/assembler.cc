@@ -198,19 +198,20 @@ namespace impm
   {
     /**
      * @brief Axisymmetry: add one point's hoop force to its radial nodal
-     * forces, @f$f_{v,r} \mathrel{+}= \tilde P_{\theta\theta} V^n
-     * \bar N_{\theta,v}@f$ with @f$\tilde P_{\theta\theta} V^n =
-     * \tau_{\theta\theta} V^0 / \Delta F_{\theta\theta}@f$ and the hoop
-     * weight @f$\bar N_{\theta,v}@f$, the average of @f$N_v / r^n@f$.
+     * forces, @f$f_{v,r} \mathrel{+}= T \bar N_{\theta,v}@f$ with the
+     * statement's hoop weights @f$\bar N_{\theta,v}@f$ and their factor
+     * @f$T@f$ (PreviouslyConvergedForm::hoop_force_stress(),
+     * UpdatedLagrangianForm::hoop_force_stress()).
      */
     template <int dim>
     void
-    add_hoop_forces(const PointStep<dim> &step, double *forces)
+    add_hoop_forces(const PointStep<dim> &step,
+                    const double          hoop_force_stress,
+                    const double         *hoop_weights,
+                    double               *forces)
     {
-      const double hoop_stress = step.update.kirchhoff_stress[2][2] /
-                                 step.hoop_increment * step.initial_volume;
       for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-        forces[v * dim] += hoop_stress * step.support.hoop_weights[v];
+        forces[v * dim] += hoop_force_stress * hoop_weights[v];
     }
 
 
@@ -259,6 +260,21 @@ namespace impm
           return this->system.point_steps[p].deformation_increment_inverse;
       }
 
+      const double *
+      hoop_weights(const unsigned int p) const override
+      {
+        if constexpr (maps_gradients)
+          return mapped_hoop_weights[p].data();
+        else
+          return this->system.point_steps[p].support.hoop_weights.data();
+      }
+
+      double
+      hoop_map(const unsigned int p) const override
+      {
+        return Form::hoop_map(this->system.point_steps[p].hoop_increment);
+      }
+
       void
       add_internal_force(NodalVector &internal_force) override
       {
@@ -267,7 +283,11 @@ namespace impm
         // The updated Lagrangian form keeps its mapped gradients for the
         // matrix of this iterate.
         if constexpr (maps_gradients)
-          mapped_gradients.resize(point_steps.size());
+          {
+            mapped_gradients.resize(point_steps.size());
+            if (axisymmetric)
+              mapped_hoop_weights.resize(point_steps.size());
+          }
         std::array<double, PointSupport<dim>::max_nodes * dim> forces;
         for (unsigned int p = 0; p < point_steps.size(); ++p)
           {
@@ -292,7 +312,18 @@ namespace impm
                              step.support.n_nodes,
                              forces.data());
             if (axisymmetric)
-              add_hoop_forces(step, forces.data());
+              {
+                if constexpr (maps_gradients)
+                  for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+                    mapped_hoop_weights[p][v] =
+                      step.support.hoop_weights[v] / step.hoop_increment;
+                add_hoop_forces(step,
+                                Form::hoop_force_stress(step.update,
+                                                        step.hoop_increment,
+                                                        step.initial_volume),
+                                hoop_weights(p),
+                                forces.data());
+              }
             for (unsigned int k = 0; k < n; ++k)
               internal_force.local_element(step.dofs[k]) += forces[k];
           }
@@ -334,12 +365,13 @@ namespace impm
                 HoopTangent<dim>      hoop;
                 Tensor<4, dim>        tangent =
                   axisymmetric ?
-                           axisymmetric_tangent(*step.material,
-                                         step.update,
-                                         step.deformation_increment_inverse,
-                                         step.hoop_increment,
-                                         step.initial_volume,
-                                         hoop) :
+                           Form::axisymmetric_tangent(
+                      *step.material,
+                      step.update,
+                      step.deformation_increment_inverse,
+                      step.hoop_increment,
+                      step.initial_volume,
+                      hoop) :
                            Form::tangent(*step.material,
                                   step.update,
                                   step.deformation_increment_inverse,
@@ -353,11 +385,13 @@ namespace impm
                                        step.initial_volume),
                     gradient_map(p),
                     axisymmetric ? &hoop : nullptr,
-                    step.update.kirchhoff_stress[2][2] / step.hoop_increment *
-                      step.initial_volume);
+                    Form::hoop_force_stress(step.update,
+                                            step.hoop_increment,
+                                            step.initial_volume),
+                    hoop_map(p));
                 const Tensor<1, dim> *gradients = this->gradients(p);
                 const double         *weights_over_radius =
-                  step.support.hoop_weights.data();
+                  axisymmetric ? hoop_weights(p) : nullptr;
                 if (!group.node_positions.empty())
                   {
                     // The point's gradients on the group's support, zero
@@ -372,7 +406,7 @@ namespace impm
                                   0.);
                         for (unsigned int v = 0; v < step.support.n_nodes; ++v)
                           group_hoop_weights[node_positions[v]] =
-                            step.support.hoop_weights[v];
+                            weights_over_radius[v];
                         weights_over_radius = group_hoop_weights.data();
                       }
                     for (unsigned int v = 0; v < step.support.n_nodes; ++v)
@@ -413,6 +447,13 @@ namespace impm
        */
       std::vector<std::array<Tensor<1, dim>, PointSupport<dim>::max_nodes>>
         mapped_gradients;
+      /**
+       * Updated Lagrangian form in axisymmetry only: the hoop weights mapped
+       * to the current configuration, @f$\bar N_v / \Delta F_{\theta
+       * \theta}@f$, by the last internal-force assembly.
+       */
+      std::vector<std::array<double, PointSupport<dim>::max_nodes>>
+        mapped_hoop_weights;
       /** Adds the groups' blocks to the matrix. */
       mutable DenseBlockAdder block_adder;
       /** Where a group's rows and columns are in its stiffness's data. */

@@ -17,7 +17,8 @@ namespace impm
                            const Tensor<2, dim> &force_stress,
                            const Tensor<2, dim> &gradient_map,
                            HoopTangent<dim>     *hoop,
-                           const double          hoop_force_stress)
+                           const double          hoop_force_stress,
+                           const double          hoop_map)
   {
     // D = A : R + S with R the inverse of the gradient map: the response
     // to a uniform dilatation of the current configuration, d(dF) = e dF.
@@ -31,13 +32,15 @@ namespace impm
     const double d = n_volume_directions();
     if (hoop != nullptr)
       {
-        // The dilatation stretches the hoop too (d(dF_tt) = e dF_tt): the
-        // in-plane stress's share, and the hoop force's response D_t (its
-        // geometric part, -tau_tt V0 / dF_tt per unit e, cancelled). The
-        // hoop tangent gains the F-bar terms of its row and column.
-        const double h = hoop_stretch[p];
-        D += hoop->in_plane_by_hoop * h;
-        double hoop_response = hoop->hoop_by_hoop * h + hoop_force_stress;
+        // The dilatation stretches the hoop too (d(dF_tt) = e dF_tt, the
+        // statement's hoop column e / hoop_map): the in-plane stress's
+        // share, and the hoop force's response D_t (its geometric part,
+        // minus the hoop force's factor per unit e, cancelled). The hoop
+        // tangent gains the F-bar terms of its row and column.
+        const double hoop_reference = 1. / hoop_map;
+        D += hoop->in_plane_by_hoop * hoop_reference;
+        double hoop_response =
+          hoop->hoop_by_hoop * hoop_reference + hoop_force_stress;
         for (unsigned int k = 0; k < dim; ++k)
           for (unsigned int q = 0; q < dim; ++q)
             hoop_response += hoop->hoop_by_in_plane[k][q] * reference[k][q];
@@ -60,13 +63,12 @@ namespace impm
       }
     if (hoop != nullptr)
       {
-        const double h             = hoop_stretch[p];
         const double hoop_response = dilatation_hoop_stress[p];
-        hoop->in_plane_by_hoop -= D * (hoop_share / (d * h));
+        hoop->in_plane_by_hoop -= D * (hoop_share * hoop_map / d);
         for (unsigned int k = 0; k < dim; ++k)
           for (unsigned int q = 0; q < dim; ++q)
             hoop->hoop_by_in_plane[k][q] -= hoop_response * map[q][k] / d;
-        hoop->hoop_by_hoop -= hoop_response * hoop_share / (d * h);
+        hoop->hoop_by_hoop -= hoop_response * hoop_share * hoop_map / d;
       }
     Tensor<4, dim> corrected = tangent;
     for (unsigned int i = 0; i < dim; ++i)
@@ -82,10 +84,10 @@ namespace impm
   template <int dim>
   Tensor<1, dim>
   FBar<dim>::node_terms(const unsigned int    p,
-                        const PointStep<dim> &step,
                         const Tensor<1, dim> &gradient,
                         const Tensor<2, dim> &map,
-                        const unsigned int    v,
+                        const double          hoop_weight,
+                        const double          hoop_map,
                         Tensor<1, dim>       &stress_part,
                         Tensor<1, dim>       &spatial) const
   {
@@ -96,10 +98,8 @@ namespace impm
                                  pressure_response[p] * spatial;
     if (grid.cartesian().axisymmetric) // the hoop row and column
       {
-        const double hoop_column =
-          step.support.hoop_weights[v] / hoop_stretch[p];
-        stress_part[0] +=
-          step.support.hoop_weights[v] * dilatation_hoop_stress[p];
+        const double hoop_column = hoop_weight * hoop_map;
+        stress_part[0] += hoop_weight * dilatation_hoop_stress[p];
         spatial[0] += hoop_column;
         if (has_pressure_unknowns())
           isochoric[0] += pressure_hoop_response[p] * hoop_column;
@@ -124,7 +124,8 @@ namespace impm
                                off_process_rows);
         return;
       }
-    const unsigned int n_patches = mean_jacobian.size();
+    const bool         axisymmetric = grid.cartesian().axisymmetric;
+    const unsigned int n_patches    = mean_jacobian.size();
     for (unsigned int patch = 0; patch < n_patches; ++patch)
       {
         const unsigned int first_dof = dof_start[patch];
@@ -143,10 +144,19 @@ namespace impm
             const Tensor<1, dim> *g      = gradients.gradients(p);
             const Tensor<2, dim>  map    = gradients.gradient_map(p);
             const double          weight = volume_share[p] * jacobian[p];
+            const double         *h =
+              axisymmetric ? gradients.hoop_weights(p) : nullptr;
+            const double hoop_map = axisymmetric ? gradients.hoop_map(p) : 1.;
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               {
                 Tensor<1, dim> stress_part, spatial;
-                node_terms(p, step, g[v], map, v, stress_part, spatial);
+                node_terms(p,
+                           g[v],
+                           map,
+                           axisymmetric ? h[v] : 0.,
+                           hoop_map,
+                           stress_part,
+                           spatial);
                 for (unsigned int i = 0; i < dim; ++i)
                   {
                     const int position =
@@ -181,7 +191,8 @@ namespace impm
                                     TrilinosWrappers::SparseMatrix &matrix,
                                     const OffProcessRows &off_process_rows)
   {
-    const unsigned int n_patches = mean_jacobian.size();
+    const bool         axisymmetric = grid.cartesian().axisymmetric;
+    const unsigned int n_patches    = mean_jacobian.size();
     for (unsigned int patch = 0; patch < n_patches; ++patch)
       {
         const unsigned int first_dof = dof_start[patch];
@@ -202,12 +213,21 @@ namespace impm
             const Tensor<1, dim> *g    = gradients.gradients(p);
             const Tensor<2, dim>  map  = gradients.gradient_map(p);
             const double          k    = bulk_response[p];
+            const double         *h =
+              axisymmetric ? gradients.hoop_weights(p) : nullptr;
+            const double hoop_map = axisymmetric ? gradients.hoop_map(p) : 1.;
             corner += volume_share[p] * point_volume[p] / k;
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               {
                 Tensor<1, dim>       stress_part, spatial;
                 const Tensor<1, dim> isochoric =
-                  node_terms(p, step, g[v], map, v, stress_part, spatial);
+                  node_terms(p,
+                             g[v],
+                             map,
+                             axisymmetric ? h[v] : 0.,
+                             hoop_map,
+                             stress_part,
+                             spatial);
                 for (unsigned int i = 0; i < dim; ++i)
                   {
                     const int position =
@@ -286,6 +306,7 @@ namespace impm
                          const Tensor<2, 2> &,
                          const Tensor<2, 2> &,
                          HoopTangent<2> *,
+                         const double,
                          const double);
   template Tensor<4, 3>
   FBar<3>::point_tangent(const unsigned int,
@@ -293,6 +314,7 @@ namespace impm
                          const Tensor<2, 3> &,
                          const Tensor<2, 3> &,
                          HoopTangent<3> *,
+                         const double,
                          const double);
   template void
   FBar<2>::add_patch_stiffness(const PointSteps<2> &,

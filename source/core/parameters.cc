@@ -184,8 +184,8 @@ namespace impm
         "carry the hoop strain and stress (stress_zz is the hoop stress). "
         "A grid that reaches the axis (Lower corner x = 0) needs the radial "
         "displacement held there: 'Condition x-' roller or fixed. F-bar "
-        "shares the volume change with the hoop stretch. Not yet with the "
-        "updated Lagrangian formulation (refused).");
+        "shares the volume change with the hoop stretch. Both formulations "
+        "(Solver/Formulation) work in it.");
       prm.declare_entry("Lower corner",
                         "0, 0",
                         Patterns::List(Patterns::Double(), 2, 3),

@@ -164,6 +164,7 @@ namespace impm
                                const Tensor<2, dim> &,
                                const Tensor<2, dim> &,
                                HoopTangent<dim> *,
+                               const double,
                                const double)
   {
     return tangent;

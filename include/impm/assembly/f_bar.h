@@ -293,8 +293,10 @@ namespace impm
      *   start-of-step gradients, the identity for mapped ones).
      * @param hoop Axisymmetry: the hoop tangent, which gains the F-bar
      *   terms of the hoop row and column (d = 3); nullptr otherwise.
-     * @param hoop_force_stress Axisymmetry: @f$\tau_{\theta\theta} V^0 /
-     *   \Delta F_{\theta\theta}@f$.
+     * @param hoop_force_stress Axisymmetry: the hoop force's factor on the
+     *   statement's hoop weights (Coupling::point_tangent()).
+     * @param hoop_map Axisymmetry: what maps the statement's hoop weights
+     *   to the current configuration (PointGradients::hoop_map()).
      */
     Tensor<4, dim>
     point_tangent(const unsigned int    p,
@@ -302,7 +304,8 @@ namespace impm
                   const Tensor<2, dim> &force_stress,
                   const Tensor<2, dim> &gradient_map,
                   HoopTangent<dim>     *hoop,
-                  const double          hoop_force_stress) override;
+                  const double          hoop_force_stress,
+                  const double          hoop_map) override;
 
     /**
      * @brief Add every patch's coupling block to @p matrix.
@@ -336,20 +339,22 @@ namespace impm
                            const OffProcessRows           &off_process_rows);
 
     /**
-     * @brief Point @p p's terms at node @p v of its support (gradient @p
-     * gradient, gradient map @p map), in axisymmetry with the hoop's:
+     * @brief Point @p p's terms at a node of its support (the statement's
+     * gradient @p gradient, its map @p map; in axisymmetry the statement's
+     * hoop weight @p hoop_weight and its map @p hoop_map), with the hoop's:
      * @p stress_part, the force of its dilatation stress, @f$D_p \nabla
      * S_v@f$ (+ @f$\bar N_{\theta,v} D_{\theta}@f$ radially), and @p
-     * spatial, the spatial gradient of tr G (+ @f$\bar N_{\theta,v} /
-     * \Delta F_{\theta\theta}@f$). Returns @f$\tilde t@f$ applied to it
-     * (pressure unknowns; zero otherwise).
+     * spatial, the spatial gradient of tr G (+ the hoop weight in the
+     * current configuration, @f$\bar N_{\theta,v}@f$ times @p hoop_map).
+     * Returns @f$\tilde t@f$ applied to it (pressure unknowns; zero
+     * otherwise).
      */
     Tensor<1, dim>
     node_terms(const unsigned int    p,
-               const PointStep<dim> &step,
                const Tensor<1, dim> &gradient,
                const Tensor<2, dim> &map,
-               const unsigned int    v,
+               const double          hoop_weight,
+               const double          hoop_map,
                Tensor<1, dim>       &stress_part,
                Tensor<1, dim>       &spatial) const;
 

@@ -15,6 +15,7 @@
 #include <impm/core/load_path.h>
 #include <impm/core/parameters.h>
 #include <impm/coupling/coupling_inputs.h>
+#include <impm/coupling/point_gradients.h>
 #include <impm/coupling/step_measure.h>
 #include <impm/coupling/step_refusal.h>
 #include <impm/grid/background_grid.h>
@@ -33,31 +34,6 @@
 namespace impm
 {
   using namespace dealii;
-
-  /**
-   * @brief What the statement of equilibrium gives a coupling of each point
-   * of the load step (by its index in LoadStepSystem::point_steps): the
-   * gradients it assembles with and the map of those to the current
-   * configuration. The Assembler implements it.
-   */
-  template <int dim>
-  class PointGradients
-  {
-  public:
-    /** @brief Destructor. */
-    virtual ~PointGradients() = default;
-
-    /** @brief The statement's gradients of point @p p, one per node of
-     *  its support. */
-    virtual const Tensor<1, dim> *
-    gradients(const unsigned int p) const = 0;
-
-    /** @brief What maps point @p p's gradients to the current
-     *  configuration (@f$\Delta F^{-1}@f$ for start-of-step gradients, the
-     *  identity for mapped ones). */
-    virtual Tensor<2, dim>
-    gradient_map(const unsigned int p) const = 0;
-  };
 
   /**
    * @brief Where a coupling's rows of unknowns go in the load step's linear
@@ -284,8 +260,11 @@ namespace impm
      * @param gradient_map As PointGradients::gradient_map().
      * @param hoop Axisymmetry: the point's hoop entries of the tangent
      *   (times volume), which it may change too; nullptr otherwise.
-     * @param hoop_force_stress Axisymmetry: @f$\tau_{\theta\theta} V^0 /
-     *   \Delta F_{\theta\theta}@f$.
+     * @param hoop_force_stress Axisymmetry: the hoop force's factor on the
+     *   statement's hoop weights (@f$\tau_{\theta\theta} V^0 /
+     *   \Delta F_{\theta\theta}@f$ on the start-of-step grid,
+     *   @f$\tau_{\theta\theta} V^0@f$ in the current configuration).
+     * @param hoop_map As PointGradients::hoop_map().
      */
     virtual Tensor<4, dim>
     point_tangent(const unsigned int    p,
@@ -293,7 +272,8 @@ namespace impm
                   const Tensor<2, dim> &force_stress,
                   const Tensor<2, dim> &gradient_map,
                   HoopTangent<dim>     *hoop,
-                  const double          hoop_force_stress);
+                  const double          hoop_force_stress,
+                  const double          hoop_map);
 
     /**
      * @brief Add this coupling's force on the material, with the sign of an

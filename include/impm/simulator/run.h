@@ -71,12 +71,6 @@ namespace impm
         solver.n_load_steps = static_cast<unsigned int>(
           std::ceil(time.end_time / time.time_step - 1e-9));
       time.nominal_step = time.end_time / solver.n_load_steps;
-      if (scene.grid.axisymmetric &&
-          solver.formulation == Parameters::Formulation::updated_lagrangian)
-        throw InputError("Solver/Formulation = updated Lagrangian is not yet "
-                         "available with Grid/Axisymmetric = true (the hoop "
-                         "terms are those of the previously converged "
-                         "statement).");
     }
   };
 
