@@ -3,10 +3,13 @@
 scene, notes the wall time at which each step line arrives, and for the
 first line at or past each of the chosen shares of the run (50 % by
 default) compares the line's "left ~X" with the time the run really took
-from that line to its end (the last step line).
+from that line to its end (the last step line). With --at-wall it does the
+same for the first line at or past each share of the run's wall time (the
+middle of the run as a clock on the wall sees it, where the share of the
+load or time reached may be far from a half).
 
 Usage: scripts/time_left_check.py IMPM SCENE [--set ENTRY=VALUE]...
-           [--at 0.25,0.5,0.75]"""
+           [--at 0.25,0.5,0.75] [--at-wall 0.5]"""
 import argparse
 import re
 import subprocess
@@ -29,8 +32,10 @@ def main():
     parser.add_argument("scene")
     parser.add_argument("--set", action="append", default=[])
     parser.add_argument("--at", default="0.5")
+    parser.add_argument("--at-wall", default="")
     arguments = parser.parse_args()
     shares = [float(x) for x in arguments.at.split(",")]
+    wall_shares = [float(x) for x in arguments.at_wall.split(",") if x]
     command = [arguments.impm, arguments.scene, "--overwrite"]
     for entry in arguments.set:
         command += ["--set", entry]
@@ -52,6 +57,12 @@ def main():
         actual = end - arrival
         print(f"  at {100 * done:.1f} % ({arrival:.1f} s): estimate {estimate:.1f} s left, "
               f"took {actual:.1f} s: error {100 * (estimate / actual - 1):+.1f} %")
+    for share in wall_shares:
+        arrival, done, estimate = next(l for l in lines if l[0] >= share * end)
+        actual = end - arrival
+        print(f"  at {100 * share:.0f} % of the wall time ({arrival:.1f} s, {100 * done:.1f} % "
+              f"of the run): estimate {estimate:.1f} s left, took {actual:.1f} s: "
+              f"error {100 * (estimate / actual - 1):+.1f} %")
 
 
 if __name__ == "__main__":
