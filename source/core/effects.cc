@@ -142,6 +142,12 @@ namespace impm
         return ramped ? Tensor<1, dim>() : acceleration;
       }
 
+      bool
+      scales_with_load_factor() const override
+      {
+        return ramped;
+      }
+
       std::string
       description() const override
       {

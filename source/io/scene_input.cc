@@ -362,59 +362,81 @@ namespace impm
 
 
 
-    void
-    apply_override(dealii::ParameterHandler &prm, const std::string &assignment)
+    namespace
     {
-      const std::string where  = "--set '" + assignment + "': ";
-      const auto        equals = assignment.find('=');
-      if (equals == std::string::npos)
-        throw InputError(where + "expected \"Subsection/Entry=value\".");
-      const std::string path =
-        dealii::Utilities::trim(assignment.substr(0, equals));
-      const std::string value =
-        dealii::Utilities::trim(assignment.substr(equals + 1));
-      const auto        slash = path.rfind('/');
-      const std::string sections =
-        slash == std::string::npos ? "" : path.substr(0, slash + 1);
-      const std::string entry =
-        slash == std::string::npos ? path : path.substr(slash + 1);
+      /** apply_overrides() for one assignment, with @p tree the declared
+       *  entries (the same for every assignment: setting a value declares
+       *  nothing). */
+      void
+      apply_override(dealii::ParameterHandler &prm,
+                     const Tree               &tree,
+                     const std::string        &assignment)
+      {
+        const std::string where  = "--set '" + assignment + "': ";
+        const auto        equals = assignment.find('=');
+        if (equals == std::string::npos)
+          throw InputError(where + "expected \"Subsection/Entry=value\".");
+        const std::string path =
+          dealii::Utilities::trim(assignment.substr(0, equals));
+        const std::string value =
+          dealii::Utilities::trim(assignment.substr(equals + 1));
+        const auto        slash = path.rfind('/');
+        const std::string sections =
+          slash == std::string::npos ? "" : path.substr(0, slash + 1);
+        const std::string entry =
+          slash == std::string::npos ? path : path.substr(slash + 1);
 
-      const Tree  tree    = declared_tree(prm);
-      const Tree *section = find_subsection(tree, sections);
-      if (section == nullptr)
-        throw InputError(where + "there is no subsection '" +
-                         sections.substr(0, sections.size() - 1) +
-                         "'; impm --print-parameters lists every entry.");
-      const auto found = section->find(entry);
-      if (found == section->not_found() || !is_entry(found->second))
-        throw InputError(where + "there is no entry '" + entry + "' " +
-                         quoted_path(sections) +
-                         suggestion(section, entry, true) + ".");
+        const Tree *section = find_subsection(tree, sections);
+        if (section == nullptr)
+          throw InputError(where + "there is no subsection '" +
+                           sections.substr(0, sections.size() - 1) +
+                           "'; impm --print-parameters lists every entry.");
+        const auto found = section->find(entry);
+        if (found == section->not_found() || !is_entry(found->second))
+          throw InputError(where + "there is no entry '" + entry + "' " +
+                           quoted_path(sections) +
+                           suggestion(section, entry, true) + ".");
 
-      std::vector<std::string> parts;
-      std::stringstream        in(sections);
-      std::string              part;
-      while (std::getline(in, part, '/'))
-        if (!part.empty())
-          parts.push_back(part);
-      for (const auto &name : parts)
-        prm.enter_subsection(name);
-      try
-        {
-          prm.set(entry, value);
-        }
-      catch (const dealii::ExceptionBase &)
-        {
-          for (unsigned int i = 0; i < parts.size(); ++i)
-            prm.leave_subsection();
-          throw InputError(where + "'" + path + "' = '" + value +
-                           "' is not allowed: it must be " +
-                           describe_pattern(found->second.get<std::string>(
-                             "pattern_description")) +
-                           ".");
-        }
-      for (unsigned int i = 0; i < parts.size(); ++i)
-        prm.leave_subsection();
+        std::vector<std::string> parts;
+        std::stringstream        in(sections);
+        std::string              part;
+        while (std::getline(in, part, '/'))
+          if (!part.empty())
+            parts.push_back(part);
+        for (const auto &name : parts)
+          prm.enter_subsection(name);
+        try
+          {
+            prm.set(entry, value);
+          }
+        catch (const dealii::ExceptionBase &)
+          {
+            for (unsigned int i = 0; i < parts.size(); ++i)
+              prm.leave_subsection();
+            throw InputError(where + "'" + path + "' = '" + value +
+                             "' is not allowed: it must be " +
+                             describe_pattern(found->second.get<std::string>(
+                               "pattern_description")) +
+                             ".");
+          }
+        for (unsigned int i = 0; i < parts.size(); ++i)
+          prm.leave_subsection();
+      }
+    } // namespace
+
+
+
+    void
+    apply_overrides(dealii::ParameterHandler       &prm,
+                    const std::vector<std::string> &assignments)
+    {
+      if (assignments.empty())
+        return;
+      // The declared entries printed and read back once (about 10 ms),
+      // not once per assignment.
+      const Tree tree = declared_tree(prm);
+      for (const auto &assignment : assignments)
+        apply_override(prm, tree, assignment);
     }
 
 

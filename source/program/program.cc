@@ -212,8 +212,7 @@ impm_program_main(int argc, char **argv)
         impm::SceneInput::parse_text(prm, impm::default_scene, "default scene");
       else
         impm::SceneInput::parse_file(prm, scene_file);
-      for (const auto &assignment : command_line.overrides)
-        impm::SceneInput::apply_override(prm, assignment);
+      impm::SceneInput::apply_overrides(prm, command_line.overrides);
       impm::SharedLibraries::check_read(prm,
                                         scene_file,
                                         command_line.overrides);

@@ -42,12 +42,21 @@ namespace impm
   {
     for (const auto &coupling : couplings.list())
       coupling->begin_attempt(material_points, system, span);
-    displacement_increment = 0.;
+    displacement_increment      = 0.;
+    start_external_force_factor = std::numeric_limits<double>::quiet_NaN();
     set_start_residual(span.start);
     grid.apply_prescribed_increment(span.target - span.start,
                                     displacement_increment);
     TimerOutput::Scope scope(timer, "assembly");
-    assembler.assemble_external_force(span.target, external_force);
+    // The start residual's external force is the end's too where the
+    // factor is the same or changes no force (the points are those of the
+    // step's start in both).
+    const bool same_external_force =
+      !std::isnan(start_external_force_factor) &&
+      (start_external_force_factor == span.target ||
+       !assembler.external_force_scales_with_load_factor());
+    if (!same_external_force)
+      assembler.assemble_external_force(span.target, external_force);
     external_force_norm = system.norm_in_system(external_force);
     // A step that nothing drives (no load: see evaluate_residual(); no
     // prescribed face moving) is measured against at least the internal
@@ -101,6 +110,7 @@ namespace impm
                                    internal_force);
     internal_force.compress(VectorOperation::add);
     assembler.assemble_external_force(start_load_factor, external_force);
+    start_external_force_factor = start_load_factor;
     internal_force -= external_force;
     internal_force.update_ghost_values();
     for (const auto &coupling : list)

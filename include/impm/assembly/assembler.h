@@ -91,6 +91,20 @@ namespace impm
                             NodalVector &external_force) const;
 
     /**
+     * @brief Whether the external force changes with the load factor (some
+     * force effect's ForceEffect::scales_with_load_factor()); if not, one
+     * assembly serves a step's start and its end.
+     */
+    bool
+    external_force_scales_with_load_factor() const
+    {
+      for (const auto &effect : force_effects)
+        if (effect->scales_with_load_factor())
+          return true;
+      return false;
+    }
+
+    /**
      * @brief Add the points' internal force of the last stress update to
      * @p internal_force (not compressed).
      */

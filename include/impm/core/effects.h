@@ -124,6 +124,18 @@ namespace impm
     {
       return Tensor<1, dim>();
     }
+
+    /**
+     * @brief Whether the forces change with the load factor. True by
+     * default (always safe); an effect whose forces do not (an unramped
+     * gravity) says false, and a step whose every effect says so assembles
+     * the external force once for its start and its end.
+     */
+    virtual bool
+    scales_with_load_factor() const
+    {
+      return true;
+    }
   };
 
   /**

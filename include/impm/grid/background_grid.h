@@ -9,7 +9,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/fe/mapping_cartesian.h>
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
@@ -122,8 +122,12 @@ namespace impm
       return fe;
     }
 
-    /** @brief The mapping of the cells. */
-    const MappingQ1<dim> &
+    /** @brief The mapping of the cells: every cell is an axis-aligned box
+     *  (a subdivided rectangle refined globally), so the Cartesian mapping,
+     *  whose inverse (a point's place in its cell, asked for every point
+     *  each time the points are sorted into cells) is a scaling, not a
+     *  Newton iteration as MappingQ1's. */
+    const MappingCartesian<dim> &
     get_mapping() const
     {
       return mapping;
@@ -269,7 +273,7 @@ namespace impm
     const Parameters::Grid<dim>              &parameters;
     const MPI_Comm                            communicator;
     parallel::distributed::Triangulation<dim> triangulation;
-    const MappingQ1<dim>                      mapping;
+    const MappingCartesian<dim>               mapping;
     const FESystem<dim>                       fe;
     DoFHandler<dim>                           dof_handler;
     CartesianGrid<dim>                        grid;

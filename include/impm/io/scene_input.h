@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <vector>
 
 namespace impm
 {
@@ -33,13 +34,13 @@ namespace impm
                const std::string        &name);
 
     /**
-     * @brief Apply a command-line override "Subsection/.../Entry=value"; an
-     * unknown entry or a value its pattern rejects is an InputError naming
-     * the override.
+     * @brief Apply the command-line overrides "Subsection/.../Entry=value"
+     * in their order; an unknown entry or a value its pattern rejects is an
+     * InputError naming the override.
      */
     void
-    apply_override(dealii::ParameterHandler &prm,
-                   const std::string        &assignment);
+    apply_overrides(dealii::ParameterHandler       &prm,
+                    const std::vector<std::string> &assignments);
 
     /**
      * @brief Check every numeric entry (a number or a list of numbers) of
