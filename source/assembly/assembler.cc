@@ -7,6 +7,7 @@
 #include <impm/system/dense_block_adder.h>
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <type_traits>
 
@@ -43,6 +44,7 @@ namespace impm
           state.elastic_left_cauchy_green();
         step.update.plastic            = false;
         step.update.plastic_multiplier = 0.;
+        step.update.elastic_energy = std::numeric_limits<double>::quiet_NaN();
       }
   }
 
@@ -62,6 +64,8 @@ namespace impm
       // Newton solve.
       try
         {
+          // Only a model that sets it leaves an energy (no stale one).
+          step.update.elastic_energy = std::numeric_limits<double>::quiet_NaN();
           step.material->update(
             step.full_deformation_increment(),
             PointState<dim>(properties).elastic_left_cauchy_green(),
@@ -264,7 +268,9 @@ namespace impm
       hoop_weights(const unsigned int p) const override
       {
         if constexpr (maps_gradients)
-          return mapped_hoop_weights[p].data();
+          return p < mapped_hoop_weights.size() ?
+                   mapped_hoop_weights[p].data() :
+                   nullptr; // not axisymmetric: none mapped
         else
           return this->system.point_steps[p].support.hoop_weights.data();
       }

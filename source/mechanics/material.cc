@@ -237,6 +237,8 @@ namespace impm
   double
   elastic_energy_density(const ConstitutiveUpdate &update)
   {
+    if (!std::isnan(update.elastic_energy))
+      return update.elastic_energy;
     const auto eigen = spectral_decomposition(update.elastic_left_cauchy_green);
     SymmetricTensor<2, 3> log_strain;
     for (unsigned int k = 0; k < 3; ++k)
@@ -280,6 +282,9 @@ namespace impm
     const Tensor<2, 3> &Q            = result.trial_eigenvectors;
     result.kirchhoff_stress          = 0;
     result.elastic_left_cauchy_green = 0;
+    result.elastic_energy =
+      0.5 *
+      (stress[0] * strain[0] + stress[1] * strain[1] + stress[2] * strain[2]);
     for (unsigned int a = 0; a < 3; ++a)
       {
         const double b_a = std::exp(2. * strain[a]);

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -53,6 +54,12 @@ namespace impm
      * with hardening need it again in their tangent.
      */
     double hardening_variable = 0.;
+    /**
+     * @f$\tfrac12\,\tau : \varepsilon_e@f$ as the update found it in
+     * its principal frame (set_coaxial_state()), or NaN where the update
+     * did not (then elastic_energy_density() decomposes @f$b_e@f$).
+     */
+    double elastic_energy = std::numeric_limits<double>::quiet_NaN();
   };
 
   /**
@@ -61,7 +68,9 @@ namespace impm
    * strain @f$\varepsilon_e = \tfrac12 \ln b_e@f$: exact for the elastic
    * laws linear in the logarithmic strain (Hencky, and the plastic models
    * built on it), an estimate for pressure-dependent elasticity
-   * (Cam-clay).
+   * (Cam-clay). The value the update stored
+   * (ConstitutiveUpdate::elastic_energy) if any, else from the spectral
+   * decomposition of @f$b_e@f$.
    */
   double
   elastic_energy_density(const ConstitutiveUpdate &update);
