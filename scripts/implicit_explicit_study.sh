@@ -32,19 +32,7 @@ trap 'rm -rf "$work"' EXIT
 cd "$work"
 bar=$here/tests/vibrating_bar.prm
 collapse=$here/tests/collapse_h1.prm
-declare -A best
-run() { # NAME SCENE ARGS...: the run's wall time into best[NAME]
-  local name=$1 scene=$2
-  shift 2
-  rm -rf "$name"
-  local start end t
-  start=$(date +%s.%N)
-  "$impm" "$scene" --set "Output directory=$name" "$@" > "$name.log" 2>&1 ||
-    { echo "$name failed"; tail -3 "$name.log"; exit 1; }
-  end=$(date +%s.%N)
-  t=$(echo "$end - $start" | bc)
-  if [ -z "${best[$name]:-}" ] || [ "$(echo "$t < ${best[$name]}" | bc)" = 1 ]; then best[$name]=$t; fi
-}
+source "$here/scripts/best_wall_time.sh"
 # NAME:integrator:steps a period or time step:extra entries
 bar_cases=(trapezoidal_25:Newmark:25 trapezoidal_50:Newmark:50
            trapezoidal_100:Newmark:100 trapezoidal_200:Newmark:200

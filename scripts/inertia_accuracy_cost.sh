@@ -26,20 +26,7 @@ trap 'rm -rf "$work"' EXIT
 cd "$work"
 bar=$here/tests/vibrating_bar.prm
 collapse=$here/tests/collapse_h1.prm
-declare -A best
-run() { # NAME SCENE ARGS...: the run's wall time into best[NAME]
-  local name=$1 scene=$2
-  shift 2
-  rm -rf "$name"
-  local start end
-  start=$(date +%s.%N)
-  "$impm" "$scene" --set "Output directory=$name" "$@" > "$name.log" 2>&1 ||
-    { echo "$name failed"; tail -3 "$name.log"; exit 1; }
-  end=$(date +%s.%N)
-  local t
-  t=$(echo "$end - $start" | bc)
-  if [ -z "${best[$name]:-}" ] || [ "$(echo "$t < ${best[$name]}" | bc)" = 1 ]; then best[$name]=$t; fi
-}
+source "$here/scripts/best_wall_time.sh"
 bar_cases=("trapezoidal_25:--set|Solver/Load steps=50"
            "trapezoidal_50:--set|Solver/Load steps=100"
            "trapezoidal_100:--set|Solver/Load steps=200"

@@ -42,9 +42,8 @@ namespace impm
   {
     for (const auto &coupling : couplings.list())
       coupling->begin_attempt(material_points, system, span);
-    displacement_increment      = 0.;
-    start_external_force_factor = std::numeric_limits<double>::quiet_NaN();
-    set_start_residual(span.start);
+    displacement_increment        = 0.;
+    const bool start_residual_set = set_start_residual(span.start);
     grid.apply_prescribed_increment(span.target - span.start,
                                     displacement_increment);
     TimerOutput::Scope scope(timer, "assembly");
@@ -52,8 +51,8 @@ namespace impm
     // factor is the same or changes no force (the points are those of the
     // step's start in both).
     const bool same_external_force =
-      !std::isnan(start_external_force_factor) &&
-      (start_external_force_factor == span.target ||
+      start_residual_set &&
+      (span.start == span.target ||
        !assembler.external_force_scales_with_load_factor());
     if (!same_external_force)
       assembler.assemble_external_force(span.target, external_force);
@@ -85,14 +84,14 @@ namespace impm
 
 
   template <int dim>
-  void
+  bool
   LoadStepProblem<dim>::set_start_residual(const double start_load_factor)
   {
     const auto &list = couplings.list();
     if (std::none_of(list.begin(), list.end(), [](const auto &coupling) {
           return coupling->needs_start_residual();
         }))
-      return;
+      return false;
     // The stresses of the zero increment are those of the step's start.
     {
       TimerOutput::Scope scope(timer, "stress update");
@@ -110,13 +109,13 @@ namespace impm
                                    internal_force);
     internal_force.compress(VectorOperation::add);
     assembler.assemble_external_force(start_load_factor, external_force);
-    start_external_force_factor = start_load_factor;
     internal_force -= external_force;
     internal_force.update_ghost_values();
     for (const auto &coupling : list)
       if (coupling->needs_start_residual())
         coupling->set_start_residual(internal_force);
     internal_force.zero_out_ghost_values();
+    return true;
   }
 
 

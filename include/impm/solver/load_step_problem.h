@@ -16,7 +16,6 @@
 #include <impm/solver/tangent_check.h>
 #include <impm/system/load_step_system.h>
 
-#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -100,8 +99,10 @@ namespace impm
      * for it, minus the external force of load factor
      * @p start_load_factor) for the couplings that ask for it
      * (Coupling::needs_start_residual()); nothing when none does.
+     * @return Whether it did: then external_force holds the external force
+     * of @p start_load_factor.
      */
-    void
+    bool
     set_start_residual(const double start_load_factor);
 
     /** @brief Whether a coupling finds each step's increment itself
@@ -211,11 +212,6 @@ namespace impm
     NodalVector external_force;
     /** Norm of the external force on the system's DoFs. */
     double external_force_norm = 0.;
-    /** The load factor at which set_start_residual() assembled the
-     *  external force it leaves in external_force this step (NaN if it did
-     *  not), for begin() to reuse where the factor does not change it. */
-    double start_external_force_factor =
-      std::numeric_limits<double>::quiet_NaN();
     /** The residual's least reference of a step that nothing drives
      *  (no load, no prescribed face moving): the internal force of a
      *  strain of 1e-5 (set in begin(); 0 for a driven step). */
