@@ -13,7 +13,7 @@
 # Usage: scripts/cone_factor_study.sh [IMPM] [OUTPUT_DIRECTORY] [I_R:NX ...]
 impm=${1:-build/impm}
 target=$(realpath "${2:-.}")
-shift 2 2> /dev/null
+shift $(($# < 2 ? $# : 2))
 runs=("$@")
 [ ${#runs[@]} -eq 0 ] && runs=(50:80 100:80 200:80)
 impm=$(cd "$(dirname "$impm")" && pwd)/$(basename "$impm")
@@ -26,6 +26,7 @@ for run in "${runs[@]}"; do
   ny=$((nx * 21 / 20))
   out=ir${ir}_${nx}
   [ -f $out/steps.csv ] && [ -f $out.wall ] && continue
+  rm -f $out.stopped
   E=$(/usr/bin/python3 -c "print(2 * 1.49 * $ir * 1e4)")
   start=$(date +%s.%N)
   "$impm" "$scene" --set "Output directory=$out" --set "Output/Interval=0" \
