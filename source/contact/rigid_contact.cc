@@ -420,6 +420,7 @@ namespace impm
   {
     for (auto &force : force_on_material)
       force = Tensor<1, dim>();
+    round_off_squared = 0.;
     for (Probe &probe : probes)
       {
         const PointStep<dim> &step     = system.point_steps[probe.point];
@@ -436,6 +437,16 @@ namespace impm
                         probe.piece != was_piece;
         if (!probe.active)
           continue;
+        double size = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          size = std::max({size,
+                           std::abs(position[d]),
+                           std::abs(displacement[probe.body][d])});
+        round_off_squared +=
+          std::pow(std::numeric_limits<double>::epsilon() *
+                     (probe.stiffness + probe.tangential_stiffness) *
+                     probe.area * size,
+                   2);
         force_on_material[probe.body] +=
           probe.normal_force + probe.friction_force;
         subtract_probe_force(probe, system, internal_force);
@@ -456,6 +467,17 @@ namespace impm
       for (unsigned int i = 0; i < dim; ++i)
         internal_force.local_element(step.dofs[v * dim + i]) -=
           probe.weights[v] * force[i];
+  }
+
+
+
+  template <int dim>
+  double
+  RigidContact<dim>::round_off_force() const
+  {
+    return std::sqrt(
+      Utilities::MPI::sum(round_off_squared,
+                          grid.get_triangulation().get_communicator()));
   }
 
 

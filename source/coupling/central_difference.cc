@@ -23,10 +23,38 @@ namespace impm
 
   template <int dim>
   double
+  contact_penalty_factor(const std::vector<RigidBody<dim>> &rigid_bodies)
+  {
+    double factor = 0.;
+    for (const auto &body : rigid_bodies)
+      {
+        factor = std::max(factor, body.penalty_factor);
+        if (body.friction != RigidBody<dim>::Friction::frictionless)
+          factor = std::max(factor, body.tangential_penalty_factor);
+      }
+    return factor;
+  }
+
+
+
+  double
+  explicit_modulus(const Material &material, const double contact_penalty)
+  {
+    return material.p_wave_modulus() +
+           (contact_penalty > 0. ?
+              0.5 * contact_penalty * material.elastic_modulus() :
+              0.);
+  }
+
+
+
+  template <int dim>
+  double
   stable_time_step(const MaterialPoints<dim> &material_points,
                    const PointSteps<dim>     &steps,
                    const CartesianGrid<dim>  &grid,
                    const double               courant_number,
+                   const double               contact_penalty,
                    const MPI_Comm             communicator)
   {
     double largest = 0.;
@@ -34,9 +62,10 @@ namespace impm
       {
         const PointState<dim> state(point.get_properties());
         const double          density = state.mass() / state.volume();
-        largest =
-          std::max(largest,
-                   steps.of(point).material->p_wave_modulus() / density);
+        largest                       = std::max(largest,
+                           explicit_modulus(*steps.of(point).material,
+                                            contact_penalty) /
+                             density);
       }
     const double speed = std::sqrt(Utilities::MPI::max(largest, communicator));
     return speed > 0. ? courant_number * smallest_cell_size(grid) / speed :
@@ -51,10 +80,13 @@ namespace impm
                            const TimeIntegrator        &integrator,
                            const StiffnessDamping<dim> &damping)
   {
+    const double contact =
+      contact_penalty_factor(inputs.parameters.rigid_bodies);
     double largest = 0.;
     for (const auto &body : inputs.parameters.bodies)
       largest =
-        std::max(largest, body.material->p_wave_modulus() / body.density);
+        std::max(largest,
+                 explicit_modulus(*body.material, contact) / body.density);
     const double h      = smallest_cell_size(inputs.grid.cartesian());
     const double stable = integrator.courant_number *
                           damping.critical_time_step(h / std::sqrt(largest));
@@ -66,6 +98,10 @@ namespace impm
             << " s (Courant number " << integrator.courant_number
             << ", smallest cell " << h << " m, speed of sound "
             << std::sqrt(largest) << " m/s"
+            << (contact > 0. ? ", with the rigid bodies' contact penalty "
+                               "factor " +
+                                 Utilities::to_string(contact) :
+                               std::string())
             << (damping.active() ? ", with the stiffness damping" : "")
             << "): set 'Time/Time step' to at most that.";
         throw InputError(out.str());
@@ -153,15 +189,21 @@ namespace impm
   template double
   smallest_cell_size(const CartesianGrid<3> &);
   template double
+  contact_penalty_factor(const std::vector<RigidBody<2>> &);
+  template double
+  contact_penalty_factor(const std::vector<RigidBody<3>> &);
+  template double
   stable_time_step(const MaterialPoints<2> &,
                    const PointSteps<2> &,
                    const CartesianGrid<2> &,
+                   const double,
                    const double,
                    const MPI_Comm);
   template double
   stable_time_step(const MaterialPoints<3> &,
                    const PointSteps<3> &,
                    const CartesianGrid<3> &,
+                   const double,
                    const double,
                    const MPI_Comm);
   template void

@@ -219,6 +219,15 @@ namespace impm
 
 
   template <int dim>
+  double
+  Coupling<dim>::round_off_force() const
+  {
+    return 0.;
+  }
+
+
+
+  template <int dim>
   bool
   Coupling<dim>::add_constant_matrix(const LoadStepSystem<dim> &,
                                      TrilinosWrappers::SparseMatrix &)

@@ -136,6 +136,8 @@ namespace impm
         , grid(inputs.grid)
         , nodes(inputs.grid)
         , stiffness_damping(integrator)
+        , contact_penalty(
+            contact_penalty_factor(inputs.parameters.rigid_bodies))
         , mass_ghost(inputs.prm,
                      integrator,
                      inputs.grid,
@@ -229,6 +231,7 @@ namespace impm
                                                            system.point_steps,
                                                            grid.cartesian(),
                                                            1.,
+                                                           contact_penalty,
                                                            communicator));
         else
           // The momentum part of the inertial force, M v / (beta dt), whose
@@ -547,6 +550,10 @@ namespace impm
       NodalMomentum<dim> nodes;
       /** The stiffness-proportional damping (inactive at 0). */
       StiffnessDamping<dim> stiffness_damping;
+      /** The stiffness of the rigid bodies' contact as a factor of the
+       *  material's Young's modulus (contact_penalty_factor()), 0 without
+       *  rigid bodies. */
+      const double contact_penalty;
       /** The mass's ghost penalty (inactive at 0). */
       MassGhostPenalty<dim> mass_ghost;
       /** The residual of the step's start on the local DoFs (empty

@@ -27,7 +27,9 @@ namespace impm
                       Patterns::Double(0., 1.),
                       "Explicit integrators: the largest time step as a "
                       "fraction of the smallest cell size over the "
-                      "largest speed of sound (above 0, at most 1).");
+                      "largest speed of sound (above 0, at most 1), that "
+                      "of the P-wave modulus M, or with rigid bodies of M "
+                      "+ alpha E / 2 (their 'Penalty factor' alpha).");
     prm.declare_entry("FLIP fraction",
                       "1",
                       Patterns::Double(0., 1.),

@@ -234,7 +234,11 @@ namespace impm
                     std::max(internal_force_norm, unloaded_reference);
     if (reference == 0.)
       reference = 1.;
-    residual.contact_changed     = couplings.state_changed();
+    residual.contact_changed = couplings.state_changed();
+    // Every coupling's round-off is collective: none is skipped.
+    for (const auto &coupling : couplings.list())
+      residual.round_off =
+        std::hypot(residual.round_off, coupling->round_off_force());
     residual.relative            = norm / reference;
     residual.norm                = norm;
     residual.internal_force_norm = internal_force_norm;

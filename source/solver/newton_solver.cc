@@ -96,7 +96,8 @@ namespace impm
         if (!std::isfinite(residual.relative))
           record.outcome = NewtonOutcome::not_finite;
         else if (residual.relative < parameters.tolerance ||
-                 residual.norm < parameters.absolute_tolerance)
+                 residual.norm < parameters.absolute_tolerance ||
+                 residual.norm <= residual.round_off)
           record.outcome = NewtonOutcome::converged;
         else if (residual.relative >
                  parameters.divergence_factor * record.residuals.front())

@@ -311,6 +311,17 @@ namespace impm
     state_changed() const override;
 
     /**
+     * @brief The round-off of the last add_forces(): over the probes in
+     * contact, the root of the sum of the squares of @f$\epsilon (k + k_t)
+     * A |x|_\infty@f$, the stiffnesses per area times the probe's area
+     * times the round-off of a gap found from coordinates of size
+     * @f$|x|_\infty@f$ (the probe's position and the body's
+     * displacement). Collective.
+     */
+    double
+    round_off_force() const override;
+
+    /**
      * @brief Add the derivative of the forces of the last add_forces() to
      * the system matrix (before its compress()).
      */
@@ -477,8 +488,11 @@ namespace impm
     /** This process's part of the contact's force on the material, per
      *  body, at the last add_forces(). */
     std::vector<Tensor<1, dim>> force_on_material;
-    std::vector<Probe>          probes;
-    std::vector<BodyForce>      forces_on_bodies;
+    /** This process's sum of the squares of the probes' force round-off
+     *  at the last add_forces(). */
+    double                 round_off_squared = 0.;
+    std::vector<Probe>     probes;
+    std::vector<BodyForce> forces_on_bodies;
   };
 } // namespace impm
 

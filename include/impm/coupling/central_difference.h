@@ -4,10 +4,12 @@
 #include <deal.II/base/mpi.h>
 
 #include <impm/basis/basis_functions.h>
+#include <impm/core/rigid_body.h>
 #include <impm/coupling/coupling.h>
 #include <impm/coupling/nodal_momentum.h>
 #include <impm/coupling/stiffness_damping.h>
 #include <impm/coupling/time_integrator.h>
+#include <impm/mechanics/material.h>
 #include <impm/points/material_points.h>
 #include <impm/points/point_step.h>
 
@@ -24,11 +26,42 @@ namespace impm
   smallest_cell_size(const CartesianGrid<dim> &grid);
 
   /**
+   * @brief The stiffness the rigid bodies' contact adds to the explicit
+   * rule, as a factor of the touching material's Young's modulus: the
+   * largest penalty factor of @p rigid_bodies (the normal one; the
+   * tangential one too where a body has friction), 0 without rigid bodies.
+   *
+   * A contact face's penalty (RigidBody::penalty_factor times E/h per area)
+   * adds a spring of about @f$\alpha E@f$ (per unit of thickness in 2D) to
+   * the nodes of a cell at the surface, whose lumped mass is about half a
+   * cell's; with the material's own stiffness (a row sum of @f$2M/h@f$ per
+   * unit area, Gershgorin's bound) the largest frequency of a boundary node
+   * is @f$\omega^2 \le (4M + 2\alpha E)/(\rho h^2)@f$, so that the stable
+   * step is that of a material with the P-wave modulus @f$M + \alpha
+   * E/2@f$ (explicit_modulus()). With the default factor 100 and
+   * @f$\nu = 0.3@f$ the step is 0.16 of the material's alone: a block on a
+   * rigid floor at Courant number 0.5 of the material alone bounces off it
+   * instead of sliding (doc/benchmarks/inertia.md).
+   */
+  template <int dim>
+  double
+  contact_penalty_factor(const std::vector<RigidBody<dim>> &rigid_bodies);
+
+  /**
+   * @brief The modulus that sets the stable explicit step of @p material:
+   * its P-wave modulus, plus @p contact_penalty (contact_penalty_factor())
+   * times half its Young's modulus.
+   */
+  double
+  explicit_modulus(const Material &material, const double contact_penalty);
+
+  /**
    * @brief The stable time step of the explicit central difference rule
    * for the points' current state: @p courant_number times the smallest
-   * cell size over the largest speed of sound of the points, @f$c_p =
-   * \sqrt{M/\rho}@f$ with their material's P-wave modulus
-   * (Material::p_wave_modulus()) and current density. Collective.
+   * cell size over the largest speed of sound of the points, @f$c =
+   * \sqrt{M_e/\rho}@f$ with the modulus explicit_modulus() of their
+   * material (its P-wave modulus, stiffened by the contact of rigid bodies,
+   * @p contact_penalty) and their current density. Collective.
    */
   template <int dim>
   double
@@ -36,13 +69,15 @@ namespace impm
                    const PointSteps<dim>     &steps,
                    const CartesianGrid<dim>  &grid,
                    const double               courant_number,
+                   const double               contact_penalty,
                    const MPI_Comm             communicator);
 
   /**
    * @brief Refuse a scene's nominal time step above the stable explicit
-   * step of its bodies' initial state (their density and P-wave modulus,
-   * @p integrator's Courant number, with @p damping), naming the stable
-   * step (one-line InputError).
+   * step of its bodies' initial state (their density and
+   * explicit_modulus() with the scene's rigid bodies'
+   * contact_penalty_factor(), @p integrator's Courant number, with
+   * @p damping), naming the stable step (one-line InputError).
    */
   template <int dim>
   void

@@ -322,6 +322,18 @@ namespace impm
     state_changed() const;
 
     /**
+     * @brief The size (N) of the round-off in the forces of its last
+     * add_forces(), independent of the iterate: a residual below it is as
+     * converged as the arithmetic allows (0 by default). A penalty contact's
+     * forces are a stiffness of E/h times a gap found by subtracting
+     * coordinates of the order of the grid's size: the residual of a block
+     * resting on a rigid floor under a small load increment stalls there,
+     * above 'Solver/Tolerance' times its load (RigidContact). Collective.
+     */
+    virtual double
+    round_off_force() const;
+
+    /**
      * @brief Add the part of the matrix that does not change within a load
      * step (after setup(), to a zeroed matrix); returns whether it added
      * anything. The system keeps it for the step's later assemblies.

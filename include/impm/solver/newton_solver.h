@@ -85,6 +85,9 @@ namespace impm
        *  stick or slip) since the previous iterate: the residual is not
        *  smooth between the two, and their contraction is not Newton's. */
       bool contact_changed = false;
+      /** The size of the round-off in the forces (N, Coupling::
+       *  round_off_force()): a norm at or below it is converged. */
+      double round_off = 0.;
     };
 
     /** @brief Evaluate the residual of the current iterate. */
