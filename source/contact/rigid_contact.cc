@@ -250,8 +250,16 @@ namespace impm
                   body.rotates() ? transpose(rotation[b]) * probe.face_normal :
                                    probe.face_normal;
                 // The penalty lets a face in by p h / (alpha E), less than
-                // h / alpha for any pressure below E.
-                probe.facing.tolerance   = smallest_cell / body.penalty_factor;
+                // h / alpha for any pressure below E; an explicit step's
+                // impact may press it deeper (use_explicit_steps()).
+                probe.facing.tolerance = smallest_cell / body.penalty_factor;
+                double shortest        = half_length[0];
+                for (unsigned int d = 1; d < dim; ++d)
+                  shortest = std::min(shortest, half_length[d]);
+                probe.facing.deep_tolerance =
+                  explicit_steps ?
+                    std::max(probe.facing.tolerance, 0.5 * shortest) :
+                    probe.facing.tolerance;
                 probe.facing.half_length = half_length;
                 double face_area         = 1.;
                 for (unsigned int d = 0; d < dim; ++d)
@@ -467,17 +475,6 @@ namespace impm
       for (unsigned int i = 0; i < dim; ++i)
         internal_force.local_element(step.dofs[v * dim + i]) -=
           probe.weights[v] * force[i];
-  }
-
-
-
-  template <int dim>
-  double
-  RigidContact<dim>::round_off_force() const
-  {
-    return std::sqrt(
-      Utilities::MPI::sum(round_off_squared,
-                          grid.get_triangulation().get_communicator()));
   }
 
 

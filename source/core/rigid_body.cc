@@ -17,12 +17,12 @@ namespace impm
         prm.enter_subsection("Rigid body " + std::to_string(k));
         RigidShape<dim>::declare_parameters(prm);
         prm.declare_entry("Displacement",
-                          "0, 0",
-                          Patterns::List(Patterns::Double(), 2, 3),
+                          "",
+                          Patterns::List(Patterns::Double(), 0, 3),
                           "The body's displacement at the full load, one "
-                          "component per dimension, in m; ramped with the "
-                          "load factor like every load. Zero on the "
-                          "'Force-driven components'.");
+                          "component per dimension, in m (empty: zero); "
+                          "ramped with the load factor like every load. "
+                          "Zero on the 'Force-driven components'.");
         prm.declare_entry("Rotation",
                           "0",
                           Patterns::Double(-360., 360.),
@@ -125,10 +125,12 @@ namespace impm
   {
     name = "Rigid body " + std::to_string(number);
     prm.enter_subsection(name);
-    shape             = RigidShape<dim>::create(prm, name);
-    const auto values = Parameters::get_vector(prm, name, "Displacement", dim);
+    shape = RigidShape<dim>::create(prm, name);
+    // Empty: the body stays where it is.
+    const auto values =
+      Parameters::get_optional_vector(prm, name, "Displacement", dim);
     for (unsigned int d = 0; d < dim; ++d)
-      displacement[d] = values[d];
+      displacement[d] = values.empty() ? 0. : values[d];
     parse_force(prm);
     parse_rotation(prm);
     friction             = static_cast<Friction>(Parameters::selection_index(

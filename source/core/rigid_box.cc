@@ -85,8 +85,17 @@ namespace impm
         for (const double sign : {-1., 1.})
           {
             const double plane = sign < 0 ? a[d] : b[d];
-            if (!(sign * facing.normal[d] < 0. &&
-                  sign * (facing.start[d] - plane) >= -facing.tolerance))
+            if (!(sign * facing.normal[d] < 0.))
+              continue;
+            // Over the side: the face's centre within the side's extent
+            // (a face straddling the side's edge, beside it, is not).
+            const double behind = -sign * (facing.start[d] - plane);
+            bool         over   = true;
+            for (unsigned int j = 0; j < dim; ++j)
+              if (j != d)
+                over =
+                  over && facing.start[j] >= a[j] && facing.start[j] <= b[j];
+            if (behind > (over ? facing.deep_tolerance : facing.tolerance))
               continue;
             const double to_face = sign * (plane - y[d]);
             if (to_face < 0. || to_face > b[d] - a[d] || to_face >= depth)

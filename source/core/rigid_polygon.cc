@@ -94,8 +94,13 @@ namespace impm
         Tensor<1, 2>       normal;
         normal[0] = orientation * edge[1] / edge.norm();
         normal[1] = -orientation * edge[0] / edge.norm();
-        if (!(normal * facing->normal < 0. &&
-              normal * (facing->start - p) >= -facing->tolerance))
+        if (!(normal * facing->normal < 0.))
+          continue;
+        // Over the edge: the start's projection on it within its ends.
+        const double along  = (facing->start - p) * edge / edge.norm_square();
+        const double behind = -(normal * (facing->start - p));
+        if (behind > (along >= 0. && along <= 1. ? facing->deep_tolerance :
+                                                   facing->tolerance))
           continue;
         const double to_edge = normal * (p - y);
         if (to_edge >= 0. && to_edge < depth)

@@ -138,6 +138,13 @@ namespace impm
 
 
   template <int dim>
+  void
+  Coupling<dim>::use_explicit_steps()
+  {}
+
+
+
+  template <int dim>
   bool
   Coupling<dim>::sets_point_volumes() const
   {
@@ -410,9 +417,12 @@ namespace impm
       }
     if (step_solver() != nullptr)
       for (const auto &coupling : couplings)
-        if (const std::string conflict = coupling->explicit_step_conflict();
-            !conflict.empty())
-          throw InputError(conflict);
+        {
+          if (const std::string conflict = coupling->explicit_step_conflict();
+              !conflict.empty())
+            throw InputError(conflict);
+          coupling->use_explicit_steps();
+        }
   }
 
 

@@ -79,6 +79,10 @@ namespace impm
       /** How far inside a side's plane the start may lie (the penalty's
        *  penetration of the step before). */
       double tolerance = 0.;
+      /** How far inside a side's plane the start may lie if it lies over
+       *  the side (within its extent along it): the penetration of an
+       *  explicit step's impact, deeper than the penalty's. */
+      double deep_tolerance = 0.;
       /** The domain's half-lengths (those along the face count). */
       Tensor<1, dim> half_length;
     };

@@ -229,6 +229,16 @@ namespace impm
     explicit_step_conflict() const;
 
     /**
+     * @brief Told once, when the couplings are made, that the scene's steps
+     * are explicit (Couplings::step_solver()): a coupling whose forces must
+     * allow for an explicit step's dynamics adjusts (RigidContact: an
+     * impact presses faces deeper than the penalty's equilibrium). The
+     * default does nothing.
+     */
+    virtual void
+    use_explicit_steps();
+
+    /**
      * @brief Whether this coupling sets the points' volume change: then the
      * Assembler hands it every point's stress update
      * (update_stresses()), and changes each point's tangent through
