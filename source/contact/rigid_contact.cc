@@ -187,34 +187,7 @@ namespace impm
         smallest_cell = std::min(smallest_cell, cell_size[d]);
         largest_cell  = std::max(largest_cell, cell_size[d]);
       }
-    // The region each body may touch in this attempt: its boxes at the
-    // start and the target, grown by a cell.
-    // A body pushed by a force starts the attempt where the last step
-    // left it, and may move about a cell more within it (the step control
-    // cuts a step that moves it further).
-    std::vector<std::pair<Point<dim>, Point<dim>>> reach;
-    for (unsigned int b = 0; b < rigid_bodies.size(); ++b)
-      {
-        const auto &body = rigid_bodies[b];
-        start_displacement[b] =
-          body.displacement_at(start) + accepted_unknowns[b];
-        displacement[b] = body.displacement_at(target) + accepted_unknowns[b];
-        displacement_increment[b] = displacement[b] - start_displacement[b];
-        applied_force[b]          = target * body.force;
-        rotation[b]               = body.rotation_at(target);
-        start_rotation[b]         = body.rotation_at(start);
-        rotation_increment[b]     = rotation[b] * transpose(start_rotation[b]);
-        const double margin =
-          (body.force_components.empty() ? 1. : 2.) * largest_cell;
-        auto       box   = body.bounding_box(displacement[b], target);
-        const auto other = body.bounding_box(start_displacement[b], start);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            box.first[d]  = std::min(box.first[d], other.first[d]) - margin;
-            box.second[d] = std::max(box.second[d], other.second[d]) + margin;
-          }
-        reach.push_back(box);
-      }
+    const auto reach = move_bodies(start, target, largest_cell);
 
     const unsigned int traction_index =
       material_points.layout().coupling_field(traction_field);
@@ -226,6 +199,16 @@ namespace impm
         const PointState<dim> state(properties);
         const Point<dim>      position    = point.get_location();
         const Tensor<1, dim>  half_length = state.domain_half_length();
+        // With explicit steps a side also pushes a face that started over
+        // it up to half the domain's shortest half-length behind it
+        // (use_explicit_steps()).
+        double impact_depth = 0.;
+        if (explicit_steps)
+          {
+            impact_depth = 0.5 * half_length[0];
+            for (unsigned int d = 1; d < dim; ++d)
+              impact_depth = std::min(impact_depth, 0.5 * half_length[d]);
+          }
         for (unsigned int face = 0; face < 2 * dim; ++face)
           {
             const unsigned int axis   = face / 2;
@@ -251,15 +234,10 @@ namespace impm
                                    probe.face_normal;
                 // The penalty lets a face in by p h / (alpha E), less than
                 // h / alpha for any pressure below E; an explicit step's
-                // impact may press it deeper (use_explicit_steps()).
+                // impact may press it deeper.
                 probe.facing.tolerance = smallest_cell / body.penalty_factor;
-                double shortest        = half_length[0];
-                for (unsigned int d = 1; d < dim; ++d)
-                  shortest = std::min(shortest, half_length[d]);
                 probe.facing.deep_tolerance =
-                  explicit_steps ?
-                    std::max(probe.facing.tolerance, 0.5 * shortest) :
-                    probe.facing.tolerance;
+                  std::max(probe.facing.tolerance, impact_depth);
                 probe.facing.half_length = half_length;
                 double face_area         = 1.;
                 for (unsigned int d = 0; d < dim; ++d)

@@ -1,7 +1,8 @@
 // The rigid bodies' motion in RigidContact: the force-driven components
 // as unknowns of the Newton solve (their residual, the coupling blocks
 // of the bordered matrix, the update, the checkpoint) and each body's
-// displacement for output. The probes and their forces are in
+// displacement for output and at the start and end of an attempt
+// (move_bodies). The probes and their forces are in
 // rigid_contact.cc.
 #include <impm/base/names.h>
 #include <impm/contact/rigid_contact.h>
@@ -162,6 +163,43 @@ namespace impm
 
 
 
+  template <int dim>
+  std::vector<std::pair<Point<dim>, Point<dim>>>
+  RigidContact<dim>::move_bodies(const double start,
+                                 const double target,
+                                 const double largest_cell)
+  {
+    // A body pushed by a force starts the attempt where the last step
+    // left it, and may move about a cell more within it (the step control
+    // cuts a step that moves it further).
+    std::vector<std::pair<Point<dim>, Point<dim>>> reach;
+    for (unsigned int b = 0; b < rigid_bodies.size(); ++b)
+      {
+        const auto &body = rigid_bodies[b];
+        start_displacement[b] =
+          body.displacement_at(start) + accepted_unknowns[b];
+        displacement[b] = body.displacement_at(target) + accepted_unknowns[b];
+        displacement_increment[b] = displacement[b] - start_displacement[b];
+        applied_force[b]          = target * body.force;
+        rotation[b]               = body.rotation_at(target);
+        start_rotation[b]         = body.rotation_at(start);
+        rotation_increment[b]     = rotation[b] * transpose(start_rotation[b]);
+        const double margin =
+          (body.force_components.empty() ? 1. : 2.) * largest_cell;
+        auto       box   = body.bounding_box(displacement[b], target);
+        const auto other = body.bounding_box(start_displacement[b], start);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            box.first[d]  = std::min(box.first[d], other.first[d]) - margin;
+            box.second[d] = std::max(box.second[d], other.second[d]) + margin;
+          }
+        reach.push_back(box);
+      }
+    return reach;
+  }
+
+
+
   // The members defined here, for both dimensions (the class's other
   // members are instantiated in rigid_contact.cc).
   template <int dim>
@@ -226,6 +264,8 @@ namespace impm
 
 
 #define IMPM_INSTANTIATE(dim)                                                  \
+  template std::vector<std::pair<Point<dim>, Point<dim>>>                      \
+  RigidContact<dim>::move_bodies(const double, const double, const double);    \
   template Vector<double> RigidContact<dim>::unknown_residuals() const;        \
   template double         RigidContact<dim>::applied_force_norm() const;       \
   template void   RigidContact<dim>::add_coupling(const LoadStepSystem<dim> &, \

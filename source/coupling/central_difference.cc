@@ -41,9 +41,7 @@ namespace impm
   explicit_modulus(const Material &material, const double contact_penalty)
   {
     return material.p_wave_modulus() +
-           (contact_penalty > 0. ?
-              0.5 * contact_penalty * material.elastic_modulus() :
-              0.);
+           0.5 * contact_penalty * material.elastic_modulus();
   }
 
 

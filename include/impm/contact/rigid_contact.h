@@ -177,6 +177,18 @@ namespace impm
     check_start(const MaterialPoints<dim> &material_points) const override;
 
     /**
+     * @brief Move the bodies to their displacement and rotation at load
+     * factor @p start and @p target (the attempt's start and end) and
+     * return the region each may touch in the attempt: its boxes at both,
+     * grown by @p largest_cell (two for a body pushed by a force, which may
+     * move about a cell more within the attempt).
+     */
+    std::vector<std::pair<Point<dim>, Point<dim>>>
+    move_bodies(const double start,
+                const double target,
+                const double largest_cell);
+
+    /**
      * @brief Start an attempt from load factor @p start to @p target: the
      * bodies move to their displacement at @p target, and the faces of
      * the points near them (within a cell of the bodies' boxes at @p start
