@@ -32,6 +32,10 @@
 #    the uninterrupted run's series and fields;
 #  * a grid piece that cannot be written (on two processes only the second
 #    process's) stops the run with one error line naming it;
+#  * the point and grid files written with 'Output/Compression' = best
+#    compression and none hold the same data as those of the default (best
+#    speed), the uncompressed ones more than 1.5 times as large, the best
+#    compressed ones no larger;
 #  * the default writes no grid file; velocity without inertia and grid
 #    fields with 'Output/Interval = 0' are refused with one line.
 # Usage: grid_files.sh IMPM TESTS_DIR [MPIEXEC N]
@@ -121,6 +125,48 @@ fi
   --set "Checkpoint/Interval=1" --set "Output directory=resumed" \
   --resume > log.txt 2>&1 || fail "the resumed run"
 $check --compare collapse resumed || fail "the resumed run's grid files"
+# 'Output/Compression': the collapse's files written at the smallest zlib
+# level and without compression hold the default (fastest) level's data,
+# point files and grid files alike, each file marked as compressed or not.
+for level in "best compression" none; do
+  dir=collapse_${level// /_}
+  "$impm" "$tests/collapse_h1_4steps.prm" "${collapse[@]}" \
+    --set "Output/Compression=$level" --set "Output directory=$dir" \
+    > log.txt 2>&1 || fail "the collapse with compression $level"
+  $check --compare collapse "$dir" || fail "grid files with compression $level"
+  /usr/bin/python3 - collapse "$dir" <<'PY' || fail "point files with compression $level"
+import glob, os, sys
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+reference, other = sys.argv[1:]
+names = sorted(os.path.basename(f) for f in glob.glob(reference + "/*.vtu"))
+assert names and names == sorted(os.path.basename(f) for f in glob.glob(other + "/*.vtu"))
+size = lambda d: sum(os.path.getsize(d + "/" + name) for name in names)
+# zlib's stored blocks without compression: about twice the fastest level's
+# bytes; its smallest level: no more than the fastest level's.
+if other.endswith("none") and not size(other) > 1.5 * size(reference):
+    sys.exit("uncompressed files not larger")
+if other.endswith("compression") and not size(other) <= size(reference):
+    sys.exit("best compression's files larger than best speed's")
+for name in names:
+    data = []
+    for directory in (reference, other):
+        reader = vtk.vtkXMLUnstructuredGridReader()
+        reader.SetFileName(directory + "/" + name)
+        reader.Update()
+        data.append(reader.GetOutput())
+    a, b = data
+    if a.GetNumberOfPoints() != b.GetNumberOfPoints() or not np.array_equal(
+            vtk_to_numpy(a.GetPoints().GetData()), vtk_to_numpy(b.GetPoints().GetData())):
+        sys.exit(name + ": the points differ")
+    for i in range(a.GetPointData().GetNumberOfArrays()):
+        array = a.GetPointData().GetArrayName(i)
+        if not np.array_equal(vtk_to_numpy(a.GetPointData().GetArray(array)),
+                              vtk_to_numpy(b.GetPointData().GetArray(array))):
+            sys.exit(name + ": " + array + " differs")
+PY
+done
 "$impm" "$tests/collapse_h1_4steps.prm" --set "Output/Interval=1" \
   --set "Output directory=default" > log.txt 2>&1 || fail "the default run"
 ls default/grid* > /dev/null 2>&1 && fail "grid files without Grid fields"

@@ -60,15 +60,20 @@ namespace impm
 
 
   template <int dim>
-  PointOutput<dim>::PointOutput(const std::string                &directory,
-                                const std::string                &base_name,
-                                const Parameters::PointFileFormat format,
-                                const MPI_Comm                    communicator)
+  PointOutput<dim>::PointOutput(
+    const std::string                                &directory,
+    const std::string                                &base_name,
+    const Parameters::PointFileFormat                 format,
+    const DataOutBase::VtkFlags::ZlibCompressionLevel compression,
+    const MPI_Comm                                    communicator)
     : directory(directory)
     , base_name(base_name)
     , format(format)
     , communicator(communicator)
   {
+    DataOutBase::VtkFlags vtk_flags;
+    vtk_flags.compression_level = compression;
+    this->set_flags(vtk_flags);
 #ifdef DEAL_II_WITH_HDF5
     // HDF5 prints its error stack to stderr by default; a failed write is
     // reported in one line (hdf5_failure()).

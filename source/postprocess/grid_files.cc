@@ -64,6 +64,7 @@ namespace impm
       /** @brief The fields the scene asks for; velocity only with inertia. */
       explicit GridFiles(const RunContext<dim> &context)
         : fields(context.output.grid_fields)
+        , compression(context.output.compression)
         , directory(context.parameters.scene.output_directory)
         , communicator(context.communicator)
         , mass_field("mass")
@@ -236,7 +237,10 @@ namespace impm
           reaction(grid, step.internal_force, step.external_force);
         const auto [written, n_written] = cells_with_mass(grid, mass);
 
-        DataOut<dim> data_out;
+        DataOut<dim>          data_out;
+        DataOutBase::VtkFlags vtk_flags;
+        vtk_flags.compression_level = compression;
+        data_out.set_flags(vtk_flags);
         data_out.attach_dof_handler(grid.get_dof_handler());
         const auto add = [&data_out](const NodalVector &vector,
                                      const std::string &name) {
@@ -302,8 +306,10 @@ namespace impm
 
       /** The fields written. */
       Parameters::Output::GridFields fields;
-      const std::string              directory;
-      const MPI_Comm                 communicator;
+      /** The zlib level of the files' data. */
+      const DataOutBase::VtkFlags::ZlibCompressionLevel compression;
+      const std::string                                 directory;
+      const MPI_Comm                                    communicator;
       /** The mass as a scalar field. */
       const FirstComponent<dim> mass_field;
       /** The series: load factor and step number of each record. */

@@ -33,6 +33,7 @@ namespace impm
         : output(context.parameters.scene.output_directory,
                  "points",
                  context.output.format,
+                 context.output.compression,
                  context.communicator)
       {
         const auto &fields = context.output.fields;

@@ -64,12 +64,14 @@ namespace impm
      * @param directory Output directory (must exist).
      * @param base_name File names start with this.
      * @param format The file format.
+     * @param compression The zlib level of the VTU files' data.
      * @param communicator The processes that write together.
      */
-    PointOutput(const std::string                &directory,
-                const std::string                &base_name,
-                const Parameters::PointFileFormat format,
-                const MPI_Comm                    communicator);
+    PointOutput(const std::string                                &directory,
+                const std::string                                &base_name,
+                const Parameters::PointFileFormat                 format,
+                const DataOutBase::VtkFlags::ZlibCompressionLevel compression,
+                const MPI_Comm                                    communicator);
 
     /**
      * @brief Start a new output step with @p n_points points on this process

@@ -1,6 +1,7 @@
 #ifndef impm_postprocess_output_parameters_h
 #define impm_postprocess_output_parameters_h
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <impm/core/parameters.h>
@@ -20,6 +21,12 @@ namespace impm
       unsigned int interval;
       /** The point files' format. */
       PointFileFormat format;
+      /** The zlib level of the VTU files' data (points and grid fields):
+       *  the entry `Compression`. The fastest level writes 10 % larger
+       *  files 20-40 times faster than the smallest (doc/benchmarks/
+       *  start_and_progress.md, "Writing the files"). */
+      DataOutBase::VtkFlags::ZlibCompressionLevel compression =
+        DataOutBase::VtkFlags::best_speed;
       /** Compare with this analytical solution. */
       AnalyticalSolution analytical_solution;
       /** Print only errors and the run's final summary on the terminal
