@@ -18,7 +18,17 @@
 #     the grid at speed; the run ends with one line naming the step, the
 #     point and the grid, and a non-zero exit code, steps.csv complete;
 #  3. thrown without gravity (no load at all), implicit and explicit: it
-#     leaves the grid in the step a rigid translation predicts.
+#     leaves the grid in the step a rigid translation predicts;
+#  4. stiff springs under a layer, explicit (winkler_springs_layer: 4 m of
+#     E = 10 MPa, nu = 0, 1000 kg/m^3 on springs of 1e9 Pa/m, cells of
+#     1 m, its weight at once): the springs add k h / 2 to the modulus of
+#     the stable step, 7.0014e-4 s at Courant number 0.5 (the material's
+#     alone: 5e-3 s, at which the run blew up to 1e8 J and threw points
+#     off the grid until 2026-11-28); 5e-3 s is refused naming the springs,
+#     and the named step runs 0.5 s with the total energy below 1.1 times
+#     the work of the weight over twice the static settlement of the
+#     centre of mass, 40 kN x 2 x (16/(3 x 1000) + 4e-5) m = 430 J (418 J
+#     measured).
 # Usage: inertia_hard_cases.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -88,4 +98,27 @@ for case in "Newmark 0.01 6 2.06875" "explicit MUSL 0.0016 17 2.01275"; do
     fail "$integrator: the steps before did not all converge"
   echo "thrown without a load ($integrator): $(grep '^Error: ' log.txt | cut -c1-100)..."
 done
+# 4. Stiff springs, explicit.
+springs=(--set "Testing/Enabled=false" --set "Inertia/Enabled=true"
+  --set "Inertia/Integrator=explicit MUSL" --set "Time/End time=0.5"
+  --set "Winkler springs/Normal stiffness=1e9" --set "Gravity/Ramped=false"
+  --set "Winkler springs/Tangential stiffness=1e9" --set "Output/Interval=0")
+rm -rf results
+"${launcher[@]}" "$impm" "$(dirname "$scene")/winkler_springs_layer.prm" \
+  "${springs[@]}" --set "Time/Time step=0.005" > log.txt 2>&1 &&
+  fail "springs: a step above the stable one was taken"
+grep -q "^Error: Inertia: the time step 0.005 s is above the stable explicit step 0.00070014 s (.*with springs of 1000000000 Pa/m on faces)" log.txt ||
+  { cat log.txt; fail "springs: the refusal does not name the stable step with the springs"; }
+rm -rf results
+"${launcher[@]}" "$impm" "$(dirname "$scene")/winkler_springs_layer.prm" \
+  "${springs[@]}" --set "Time/Time step=0.00070014" > log.txt 2>&1 ||
+  { cat log.txt; fail "springs: the run at the stable step failed"; }
+/usr/bin/python3 - results/steps.csv <<'PY' || fail "springs: the energy grew beyond the weight's work"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+largest = max(float(r["total_energy"]) for r in rows)
+print("stiff springs, explicit at the stable step: %d steps, largest total energy %.0f J (bound 473 J)"
+      % (len(rows), largest))
+sys.exit(0 if abs(float(rows[-1]["time"]) - 0.5) < 1e-9 and largest < 1.1 * 430 else 1)
+PY
 echo "inertia_hard_cases: passed"

@@ -141,6 +141,20 @@ namespace impm
 
 
   template <int dim>
+  std::string
+  FBar<dim>::explicit_step_conflict() const
+  {
+    if (!has_pressure_unknowns())
+      return "";
+    return "Material points/Cell pressure unknowns: the cell pressures are "
+           "unknowns of the load step's system, which an explicit step does "
+           "not solve; use plain F-bar ('Cell pressure unknowns = false') or "
+           "an implicit integrator (Newmark or generalised-alpha).";
+  }
+
+
+
+  template <int dim>
   std::vector<std::string>
   FBar<dim>::notes(const Parameters::LinearSolverType linear_solver) const
   {
@@ -164,34 +178,35 @@ namespace impm
 
 
 
-#define IMPM_INSTANTIATE(dim)                                            \
-  template FBar<dim>::FBar(const CouplingInputs<dim> &);                 \
-  template unsigned int FBar<dim>::prepare(const MaterialPoints<dim> &,  \
-                                           const LoadStepSystem<dim> &,  \
-                                           const std::vector<bool> &);   \
-  template void         FBar<dim>::setup(                                \
-    const MaterialPoints<dim> &,                                 \
-    const LoadStepSystem<dim> &,                                 \
-    const CouplingRows &,                                        \
-    std::vector<std::vector<types::global_dof_index>> &);        \
-  template void FBar<dim>::begin_attempt(const MaterialPoints<dim> &,    \
-                                         const LoadStepSystem<dim> &,    \
-                                         const StepSpan &);              \
-  template bool FBar<dim>::sets_point_volumes() const;                   \
-  template bool FBar<dim>::update_stresses(                              \
-    PointSteps<dim> &, const std::function<bool(unsigned int)> &);       \
-  template bool FBar<dim>::add_matrix(const PointGradients<dim> &,       \
-                                      const LoadStepSystem<dim> &,       \
-                                      TrilinosWrappers::SparseMatrix &); \
-  template void FBar<dim>::add_row_residuals(                            \
-    std::vector<std::pair<types::global_dof_index, double>> &);          \
-  template void FBar<dim>::add_solution(                                 \
-    const TrilinosWrappers::MPI::Vector &);                              \
-  template double FBar<dim>::perturb_row(const types::global_dof_index,  \
-                                         const double);                  \
-  template bool   FBar<dim>::needs_direct_solver() const;                \
-  template std::vector<std::string> FBar<dim>::notes(                    \
-    const Parameters::LinearSolverType) const;                           \
+#define IMPM_INSTANTIATE(dim)                                                \
+  template FBar<dim>::FBar(const CouplingInputs<dim> &);                     \
+  template unsigned int FBar<dim>::prepare(const MaterialPoints<dim> &,      \
+                                           const LoadStepSystem<dim> &,      \
+                                           const std::vector<bool> &);       \
+  template void         FBar<dim>::setup(                                    \
+    const MaterialPoints<dim> &,                                     \
+    const LoadStepSystem<dim> &,                                     \
+    const CouplingRows &,                                            \
+    std::vector<std::vector<types::global_dof_index>> &);            \
+  template void FBar<dim>::begin_attempt(const MaterialPoints<dim> &,        \
+                                         const LoadStepSystem<dim> &,        \
+                                         const StepSpan &);                  \
+  template bool FBar<dim>::sets_point_volumes() const;                       \
+  template bool FBar<dim>::update_stresses(                                  \
+    PointSteps<dim> &, const std::function<bool(unsigned int)> &);           \
+  template bool FBar<dim>::add_matrix(const PointGradients<dim> &,           \
+                                      const LoadStepSystem<dim> &,           \
+                                      TrilinosWrappers::SparseMatrix &);     \
+  template void FBar<dim>::add_row_residuals(                                \
+    std::vector<std::pair<types::global_dof_index, double>> &);              \
+  template void FBar<dim>::add_solution(                                     \
+    const TrilinosWrappers::MPI::Vector &);                                  \
+  template double      FBar<dim>::perturb_row(const types::global_dof_index, \
+                                         const double);                 \
+  template bool        FBar<dim>::needs_direct_solver() const;               \
+  template std::string FBar<dim>::explicit_step_conflict() const;            \
+  template std::vector<std::string> FBar<dim>::notes(                        \
+    const Parameters::LinearSolverType) const;                               \
   template std::vector<std::string> FBar<dim>::descriptions() const;
   IMPM_INSTANTIATE(2)
   IMPM_INSTANTIATE(3)

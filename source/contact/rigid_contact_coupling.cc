@@ -22,11 +22,26 @@ namespace impm
 
   template <int dim>
   void
-  RigidContact<dim>::use_explicit_steps()
+  RigidContact<dim>::use_explicit_steps(const double)
   {
     // A block striking a plate at 4.5 m/s presses its faces up to
     // 4.7 h / alpha in (tests/inertia_free_fall.prm, explicit MUSL).
     explicit_steps = true;
+  }
+
+
+
+  template <int dim>
+  std::string
+  RigidContact<dim>::explicit_step_conflict() const
+  {
+    if (body_unknowns.empty())
+      return "";
+    return "Rigid body " + std::to_string(body_unknowns.front().body + 1) +
+           ": 'Force-driven components' make its displacement an unknown of "
+           "the load step's system, which an explicit step does not solve; "
+           "prescribe its 'Displacement' or use an implicit integrator "
+           "(Newmark or generalised-alpha).";
   }
 
 
@@ -131,19 +146,20 @@ namespace impm
 
 
 
-#define IMPM_INSTANTIATE(dim)                                                  \
-  template RigidContact<dim>::RigidContact(const CouplingInputs<dim> &);       \
-  template PointFields RigidContact<dim>::point_fields() const;                \
-  template void RigidContact<dim>::begin_attempt(const MaterialPoints<dim> &,  \
-                                                 const LoadStepSystem<dim> &,  \
-                                                 const StepSpan &);            \
-  template bool RigidContact<dim>::add_matrix(                                 \
-    const PointGradients<dim> &,                                               \
-    const LoadStepSystem<dim> &,                                               \
-    TrilinosWrappers::SparseMatrix &);                                         \
-  template bool   RigidContact<dim>::holds_material(const unsigned int) const; \
-  template void   RigidContact<dim>::use_explicit_steps();                     \
-  template double RigidContact<dim>::round_off_force() const;                  \
+#define IMPM_INSTANTIATE(dim)                                                 \
+  template RigidContact<dim>::RigidContact(const CouplingInputs<dim> &);      \
+  template PointFields RigidContact<dim>::point_fields() const;               \
+  template void RigidContact<dim>::begin_attempt(const MaterialPoints<dim> &, \
+                                                 const LoadStepSystem<dim> &, \
+                                                 const StepSpan &);           \
+  template bool RigidContact<dim>::add_matrix(                                \
+    const PointGradients<dim> &,                                              \
+    const LoadStepSystem<dim> &,                                              \
+    TrilinosWrappers::SparseMatrix &);                                        \
+  template bool RigidContact<dim>::holds_material(const unsigned int) const;  \
+  template void RigidContact<dim>::use_explicit_steps(const double);          \
+  template std::string    RigidContact<dim>::explicit_step_conflict() const;  \
+  template double         RigidContact<dim>::round_off_force() const;         \
   template Tensor<1, dim> RigidContact<dim>::force_from_material() const;
   IMPM_INSTANTIATE(2)
   IMPM_INSTANTIATE(3)

@@ -5,6 +5,7 @@
 #include <impm/core/boundary_selection.h>
 #include <impm/coupling/coupling.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -286,6 +287,14 @@ namespace impm
         if (has_dashpots())
           measures.push_back(
             {"absorbed_energy", "Ea", absorbed_energy, MeasureKind::energy});
+      }
+
+      /** @brief The springs' stiffer direction, for the stable explicit
+       *  step. */
+      double
+      surface_stiffness() const override
+      {
+        return std::max(normal_stiffness, tangential_stiffness);
       }
 
       /** @brief Dashpots act on the step's mean velocity, the increment

@@ -38,10 +38,14 @@ namespace impm
 
 
   double
-  explicit_modulus(const Material &material, const double contact_penalty)
+  explicit_modulus(const Material &material,
+                   const double    contact_penalty,
+                   const double    surface_stiffness,
+                   const double    h)
   {
     return material.p_wave_modulus() +
-           0.5 * contact_penalty * material.elastic_modulus();
+           0.5 * (contact_penalty * material.elastic_modulus() +
+                  surface_stiffness * h);
   }
 
 
@@ -53,20 +57,24 @@ namespace impm
                    const CartesianGrid<dim>  &grid,
                    const double               courant_number,
                    const double               contact_penalty,
+                   const double               surface_stiffness,
                    const MPI_Comm             communicator)
   {
-    double largest = 0.;
+    const double h       = smallest_cell_size(grid);
+    double       largest = 0.;
     for (const auto &point : material_points.particles())
       {
         const PointState<dim> state(point.get_properties());
         const double          density = state.mass() / state.volume();
         largest                       = std::max(largest,
                            explicit_modulus(*steps.of(point).material,
-                                            contact_penalty) /
+                                            contact_penalty,
+                                            surface_stiffness,
+                                            h) /
                              density);
       }
     const double speed = std::sqrt(Utilities::MPI::max(largest, communicator));
-    return speed > 0. ? courant_number * smallest_cell_size(grid) / speed :
+    return speed > 0. ? courant_number * h / speed :
                         std::numeric_limits<double>::max();
   }
 
@@ -76,16 +84,18 @@ namespace impm
   void
   check_explicit_time_step(const CouplingInputs<dim>   &inputs,
                            const TimeIntegrator        &integrator,
-                           const StiffnessDamping<dim> &damping)
+                           const StiffnessDamping<dim> &damping,
+                           const double                 surface_stiffness)
   {
     const double contact =
       contact_penalty_factor(inputs.parameters.rigid_bodies);
-    double largest = 0.;
+    const double h       = smallest_cell_size(inputs.grid.cartesian());
+    double       largest = 0.;
     for (const auto &body : inputs.parameters.bodies)
-      largest =
-        std::max(largest,
-                 explicit_modulus(*body.material, contact) / body.density);
-    const double h      = smallest_cell_size(inputs.grid.cartesian());
+      largest = std::max(
+        largest,
+        explicit_modulus(*body.material, contact, surface_stiffness, h) /
+          body.density);
     const double stable = integrator.courant_number *
                           damping.critical_time_step(h / std::sqrt(largest));
     if (inputs.time.nominal_step > stable * (1. + 1e-12))
@@ -100,6 +110,10 @@ namespace impm
                                "factor " +
                                  Utilities::to_string(contact) :
                                std::string())
+            << (surface_stiffness > 0. ?
+                  ", with springs of " +
+                    Utilities::to_string(surface_stiffness) + " Pa/m on faces" :
+                  std::string())
             << (damping.active() ? ", with the stiffness damping" : "")
             << "): set 'Time/Time step' to at most that.";
         throw InputError(out.str());
@@ -196,11 +210,13 @@ namespace impm
                    const CartesianGrid<2> &,
                    const double,
                    const double,
+                   const double,
                    const MPI_Comm);
   template double
   stable_time_step(const MaterialPoints<3> &,
                    const PointSteps<3> &,
                    const CartesianGrid<3> &,
+                   const double,
                    const double,
                    const double,
                    const MPI_Comm);
@@ -231,9 +247,11 @@ namespace impm
   template void
   check_explicit_time_step(const CouplingInputs<2> &,
                            const TimeIntegrator &,
-                           const StiffnessDamping<2> &);
+                           const StiffnessDamping<2> &,
+                           const double);
   template void
   check_explicit_time_step(const CouplingInputs<3> &,
                            const TimeIntegrator &,
-                           const StiffnessDamping<3> &);
+                           const StiffnessDamping<3> &,
+                           const double);
 } // namespace impm

@@ -142,12 +142,24 @@ namespace impm
                      integrator,
                      inputs.grid,
                      inputs.parameters.bodies)
+        , inputs(inputs)
       {
         if (!inputs.time.in_time())
           throw InputError("Inertia needs time: set 'Time/End time' above 0 "
                            "(the load steps are then time steps).");
+      }
+
+      /** @brief Refuse a time step above the stable explicit step, with
+       *  the couplings' springs (once all couplings are made). */
+      void
+      use_explicit_steps(const double surface_stiffness) override
+      {
+        springs_stiffness = surface_stiffness;
         if (integrator.is_explicit())
-          check_explicit_time_step(inputs, integrator, stiffness_damping);
+          check_explicit_time_step(inputs,
+                                   integrator,
+                                   stiffness_damping,
+                                   surface_stiffness);
       }
 
       /** @brief True: the mass matrix holds the material in every
@@ -232,6 +244,7 @@ namespace impm
                                                            grid.cartesian(),
                                                            1.,
                                                            contact_penalty,
+                                                           springs_stiffness,
                                                            communicator));
         else
           // The momentum part of the inertial force, M v / (beta dt), whose
@@ -556,6 +569,12 @@ namespace impm
       const double contact_penalty;
       /** The mass's ghost penalty (inactive at 0). */
       MassGhostPenalty<dim> mass_ghost;
+      /** The largest stiffness per area of the scene's springs on faces
+       *  (Coupling::surface_stiffness()), told by use_explicit_steps(). */
+      double springs_stiffness = 0.;
+      /** The scene, for the explicit start check (its references, to the
+       *  run's parameters and grid, outlive the couplings). */
+      const CouplingInputs<dim> inputs;
       /** The residual of the step's start on the local DoFs (empty
        *  unless generalised-alpha). */
       std::vector<double> start_residual;

@@ -158,6 +158,12 @@ namespace impm
     bool
     needs_direct_solver() const override;
 
+    /** @brief With pressure unknowns: they are rows of the load step's
+     *  system, which an explicit step does not solve (their pressures would
+     *  stay at the start's). */
+    std::string
+    explicit_step_conflict() const override;
+
     /** @brief With pressure unknowns, what the linear solver does with
      *  them. */
     std::vector<std::string>

@@ -330,7 +330,13 @@ namespace impm
      * passed through the side it struck.
      */
     void
-    use_explicit_steps() override;
+    use_explicit_steps(const double surface_stiffness) override;
+
+    /** @brief A body with force-driven components: its displacement there
+     *  is an unknown of the load step's system, which an explicit step
+     *  does not solve (the body would stand still). */
+    std::string
+    explicit_step_conflict() const override;
 
     /**
      * @brief The round-off of the last add_forces(): over the probes in

@@ -49,11 +49,18 @@ namespace impm
 
   /**
    * @brief The modulus that sets the stable explicit step of @p material:
-   * its P-wave modulus, plus @p contact_penalty (contact_penalty_factor())
-   * times half its Young's modulus.
+   * its P-wave modulus, plus half of what the surface adds: @p
+   * contact_penalty (contact_penalty_factor()) times its Young's modulus,
+   * and @p surface_stiffness (Pa/m, Coupling::surface_stiffness(): springs
+   * on a face) times the cell size @p h. A spring of k per area adds k
+   * h^(d-1) to a surface node as the contact's alpha E / h does (see
+   * contact_penalty_factor()): k h in place of alpha E.
    */
   double
-  explicit_modulus(const Material &material, const double contact_penalty);
+  explicit_modulus(const Material &material,
+                   const double    contact_penalty,
+                   const double    surface_stiffness,
+                   const double    h);
 
   /**
    * @brief The stable time step of the explicit central difference rule
@@ -61,7 +68,8 @@ namespace impm
    * cell size over the largest speed of sound of the points, @f$c =
    * \sqrt{M_e/\rho}@f$ with the modulus explicit_modulus() of their
    * material (its P-wave modulus, stiffened by the contact of rigid bodies,
-   * @p contact_penalty) and their current density. Collective.
+   * @p contact_penalty, and by springs on faces, @p surface_stiffness) and
+   * their current density. Collective.
    */
   template <int dim>
   double
@@ -70,20 +78,23 @@ namespace impm
                    const CartesianGrid<dim>  &grid,
                    const double               courant_number,
                    const double               contact_penalty,
+                   const double               surface_stiffness,
                    const MPI_Comm             communicator);
 
   /**
    * @brief Refuse a scene's nominal time step above the stable explicit
    * step of its bodies' initial state (their density and
    * explicit_modulus() with the scene's rigid bodies'
-   * contact_penalty_factor(), @p integrator's Courant number, with
-   * @p damping), naming the stable step (one-line InputError).
+   * contact_penalty_factor() and the couplings' @p surface_stiffness,
+   * @p integrator's Courant number, with @p damping), naming the stable
+   * step (one-line InputError).
    */
   template <int dim>
   void
   check_explicit_time_step(const CouplingInputs<dim>   &inputs,
                            const TimeIntegrator        &integrator,
-                           const StiffnessDamping<dim> &damping);
+                           const StiffnessDamping<dim> &damping,
+                           const double                 surface_stiffness);
 
   /**
    * @brief Why an explicit step of @p time_step is cut ("" if it is not):

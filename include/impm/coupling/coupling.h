@@ -229,14 +229,24 @@ namespace impm
     explicit_step_conflict() const;
 
     /**
+     * @brief The largest stiffness per unit area (Pa/m) this coupling's
+     * springs add at the material's surface whatever the material (Winkler
+     * springs); 0 (the default) for none. The stable explicit step counts
+     * it (explicit_modulus()).
+     */
+    virtual double
+    surface_stiffness() const;
+
+    /**
      * @brief Told once, when the couplings are made, that the scene's steps
-     * are explicit (Couplings::step_solver()): a coupling whose forces must
-     * allow for an explicit step's dynamics adjusts (RigidContact: an
-     * impact presses faces deeper than the penalty's equilibrium). The
-     * default does nothing.
+     * are explicit (Couplings::step_solver()), with the largest
+     * surface_stiffness() of the scene's couplings: a coupling whose forces
+     * must allow for an explicit step's dynamics adjusts (RigidContact: an
+     * impact presses faces deeper than the penalty's equilibrium; Inertia:
+     * the stable step counts the springs). The default does nothing.
      */
     virtual void
-    use_explicit_steps();
+    use_explicit_steps(const double surface_stiffness);
 
     /**
      * @brief Whether this coupling sets the points' volume change: then the
