@@ -19,7 +19,12 @@
 #     F = 2.5 without a displacement limit): its point files end with its
 #     last converged step, though that is no output step;
 #  6. the block in 3D (a cube on rollers under a traction on z+, uniaxial
-#     stress): its bracket holds 1.25 too.
+#     stress): its bracket holds 1.25 too;
+#  7. a failure displacement below the block's elastic settlement (1e-9 m
+#     against 3.5e-6 m in the first step): every trial would fail alike, whatever F (until
+#     2026-11-28 the search ran its 30 trials down to F = 8e-6); the search
+#     stops after the second trial with one line saying the displacement
+#     does not depend on the strength.
 # Usage: strength_reduction.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
 source "$(dirname "$0")/script_helpers.sh" "$@"
 scene=$2/strength_reduction_block.prm
@@ -92,6 +97,15 @@ run --set "Dimension=3" --set "Gravity/Acceleration=0, 0, -10" \
   --set "Body 1/Upper corner=1, 1, 1" --set "Traction/Boundary=z+" \
   --set "Traction/Traction=0, 0, -16000" --set "Output directory=in_3d"
 holds in_3d 1.25 0.01
+
+# 7. A failure displacement below the elastic settlement.
+"${launcher[@]}" "$impm" "$scene" --set "Output directory=elastic" \
+  --set "Strength reduction/Failure displacement=1e-9" > log.txt 2>&1 &&
+  fail "a failure displacement below the elastic settlement was accepted"
+grep -q "^Error: Strength reduction: the trials at F = 1.000000 and F = 0.666667 failed alike (a point moved .* m by the load factor .* in both): the displacement does not depend on the strength" log.txt ||
+  { cat log.txt; fail "no line saying the failure does not depend on the strength"; }
+[ "$(grep -c '^Error' log.txt)" = 1 ] && [ "$(grep -c . elastic/factor_of_safety.csv)" = 3 ] ||
+  fail "not one error line after two trials"
 
 # 5. A load step that cannot be solved.
 scene=$2/strength_reduction_slope.prm

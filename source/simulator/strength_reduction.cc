@@ -11,6 +11,7 @@
 #include <impm/simulator/strength_reduction.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -366,6 +367,35 @@ namespace impm
 
   template <int dim>
   void
+  StrengthReduction<dim>::refuse_failure_without_strength(
+    const Trial       &previous,
+    const Trial       &trial,
+    const std::string &directory)
+  {
+    if (trial.stands || previous.stands || trial.failure != "displacement" ||
+        previous.failure != "displacement" ||
+        previous.load_factor != trial.load_factor ||
+        std::abs(previous.largest_displacement - trial.largest_displacement) >
+          1e-9 * trial.largest_displacement)
+      return;
+    std::ostringstream message;
+    message << "Strength reduction: the trials at F = "
+            << fixed(previous.factor, 6)
+            << " and F = " << fixed(trial.factor, 6)
+            << " failed alike (a point moved " << trial.largest_displacement
+            << " m by the load factor " << trial.load_factor
+            << " in both): the displacement does not depend on the "
+               "strength, so it is elastic; raise 'Strength reduction/"
+               "Failure displacement' above it or stiffen the material (see "
+               "factor_of_safety.csv in '"
+            << directory << "').";
+    throw CollectiveError(message.str());
+  }
+
+
+
+  template <int dim>
+  void
   StrengthReduction<dim>::run(dealii::ParameterHandler &prm,
                               const RunOptions         &options,
                               const MPI_Comm            communicator)
@@ -423,6 +453,10 @@ namespace impm
         const Trial &trial = trials.back();
         write_table(trials, directory, communicator);
         out << describe(trial, trials.size(), testing) << std::endl;
+        if (trials.size() > 1)
+          refuse_failure_without_strength(trials[trials.size() - 2],
+                                          trial,
+                                          directory);
         std::optional<std::size_t> &end = trial.stands ? stable : failed;
         if (!end ||
             (trial.stands ? factor > factor_of(end) : factor < factor_of(end)))

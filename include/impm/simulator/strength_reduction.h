@@ -166,6 +166,16 @@ namespace impm
      *  @p testing). */
     static std::string
     describe(const Trial &trial, const unsigned int number, const bool testing);
+
+    /** @brief Refuse the search (one line) when @p trial and @p previous,
+     *  at different factors, failed on 'Failure displacement' in the same
+     *  load step with the same largest displacement (to 1e-9): the
+     *  displacement does not depend on the strength, so it is elastic and
+     *  no factor can make the scene stand. */
+    static void
+    refuse_failure_without_strength(const Trial       &previous,
+                                    const Trial       &trial,
+                                    const std::string &directory);
   };
 } // namespace impm
 
