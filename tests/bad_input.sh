@@ -263,6 +263,9 @@ expect local_damping_implicit "Inertia: 'Local damping' needs an explicit integr
 # Strength reduction.
 expect strength_reduction_elastic "Strength reduction: no body's material has a strength to reduce \\(the bodies are elastic\\)" - -- "$base" --set "Body 1/Material/Model=Hencky elastic" --set "Strength reduction/Enabled=true"
 expect strength_reduction_resume "A strength reduction cannot be resumed: its trials are whole runs of the scene" also_parallel -- "$base" --set "Strength reduction/Enabled=true" --resume
+expect strength_reduction_face_motion "Strength reduction: 'Grid/Displacement y\\+' prescribes a motion, which moves the material whatever its strength" - -- "$base" --set "Strength reduction/Enabled=true" --set "Grid/Condition y+=prescribed" --set "Grid/Displacement y+=0, -0.01"
+expect strength_reduction_rigid_motion "Strength reduction: 'Rigid body 1/Displacement' prescribes a motion" - -- "$(dirname "$base")/contact_plate_compression_3d.prm" --set "Strength reduction/Enabled=true" --set "Body 1/Material/Model=von Mises"
+expect face_displacement_not_prescribed "'Grid/Displacement y\\+' is not zero, but 'Condition y\\+' does not prescribe the face's motion" also_parallel -- "$base" --set "Grid/Condition y+=fixed" --set "Grid/Displacement y+=0, -0.01"
 expect strength_reduction_inertia "'Strength reduction/Enabled' = 'true' needs a quasi-static scene" - -- "$base" --set "Strength reduction/Enabled=true" --set "Time/End time=1" --set "Inertia/Enabled=true"
 expect inertia_without_time "Inertia needs time: set 'Time/End time' above 0 \\(the load steps are then time steps\\)." - -- "$base" --set "Inertia/Enabled=true"
 expect time_step_without_end_time "Parameter 'Time/Time step' = 0.100000 needs 'Time/End time' above 0" - -- "$base" --set "Time/Time step=0.1"

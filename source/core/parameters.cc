@@ -261,13 +261,25 @@ namespace impm
                             "Grid/Condition " + face,
                             prm.get("Condition " + face)));
           face_displacements[f] = 0;
-          if (is_prescribed(face_conditions[f]))
-            {
-              const auto u =
-                get_vector(prm, "Grid", "Displacement " + face, dim);
-              for (unsigned int d = 0; d < dim; ++d)
-                face_displacements[f][d] = u[d];
-            }
+          // A face that is not prescribed takes no displacement: any
+          // number that is not zero was meant for it (the default "0, 0"
+          // stands in 3D too).
+          const std::vector<double> u =
+            is_prescribed(face_conditions[f]) ?
+              get_vector(prm, "Grid", "Displacement " + face, dim) :
+              Utilities::string_to_double(
+                Utilities::split_string_list(prm.get("Displacement " + face)));
+          for (unsigned int d = 0; d < u.size(); ++d)
+            if (is_prescribed(face_conditions[f]))
+              face_displacements[f][d] = u[d];
+            else if (u[d] != 0.)
+              throw InputError("'Grid/Displacement " + face +
+                               "' is not zero, but 'Condition " + face +
+                               "' does not prescribe the face's motion; set "
+                               "'Condition " +
+                               face +
+                               "' to prescribed (or prescribed normal), or "
+                               "the displacement to zero.");
           const auto region =
             get_optional_vector(prm, "Grid", "Region " + face, 2 * dim);
           face_has_region[f] = !region.empty();

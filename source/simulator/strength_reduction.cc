@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <impm/base/errors.h>
+#include <impm/base/names.h>
 #include <impm/core/point_properties.h>
 #include <impm/core/scene_checks.h>
 #include <impm/io/atomic_file.h>
@@ -294,6 +295,29 @@ namespace impm
       throw InputError("Strength reduction: no body's material has a "
                        "strength to reduce (the bodies are elastic), so no "
                        "trial could fail.");
+    // A prescribed motion moves the material whatever its strength: a
+    // trial fails only when the motion is beyond the material's reach.
+    const auto refuse_motion = [](const std::string &entry) {
+      throw InputError(
+        "Strength reduction: '" + entry +
+        "' prescribes a motion, which moves the material whatever its "
+        "strength, so no factor of safety follows from it; load the scene "
+        "by forces (gravity, a traction, a force-driven rigid body).");
+    };
+    for (unsigned int f = 0; f < 2 * dim; ++f)
+      if (settings.scene.grid.face_displacements[f].norm() > 0.)
+        refuse_motion("Grid/Displacement " + Names::face(f));
+    for (const auto &body : settings.scene.rigid_bodies)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          if (body.displacement[d] != 0. &&
+              std::find(body.force_components.begin(),
+                        body.force_components.end(),
+                        d) == body.force_components.end())
+            refuse_motion(body.name + "/Displacement");
+        if (body.rotation_angle != 0.)
+          refuse_motion(body.name + "/Rotation");
+      }
   }
 
 
