@@ -283,6 +283,12 @@ namespace impm
           const auto region =
             get_optional_vector(prm, "Grid", "Region " + face, 2 * dim);
           face_has_region[f] = !region.empty();
+          if (face_has_region[f] && face_conditions[f] == FaceCondition::none)
+            throw InputError("'Grid/Region " + face + "' limits 'Condition " +
+                             face +
+                             "' to a part of the face, but the condition is "
+                             "none (the face is free): give the condition, "
+                             "or leave the region empty.");
           for (unsigned int d = 0; d < dim && face_has_region[f]; ++d)
             {
               face_regions[f].first[d]  = region[d];
