@@ -228,12 +228,9 @@ namespace impm
     virtual std::string
     explicit_step_conflict() const;
 
-    /**
-     * @brief The largest stiffness per unit area (Pa/m) this coupling's
-     * springs add at the material's surface whatever the material (Winkler
-     * springs); 0 (the default) for none. The stable explicit step counts
-     * it (explicit_modulus()).
-     */
+    /** @brief The largest stiffness per area (Pa/m) this coupling's springs
+     *  add at the material's surface (Winkler springs; 0 by default), which
+     *  the stable explicit step counts (explicit_modulus()). */
     virtual double
     surface_stiffness() const;
 
