@@ -155,7 +155,7 @@ namespace impm
     wall_timer.start();
     start_run();
 
-    LoadStepControl control(settings.solver);
+    LoadStepControl control(settings.solver, settings.time.end_time);
     if (resume_state)
       control.load(*resume_state);
     bool new_state = true;

@@ -6,12 +6,29 @@
 
 namespace impm
 {
-  LoadStepControl::LoadStepControl(const Parameters::Solver &parameters)
+  LoadStepControl::LoadStepControl(const Parameters::Solver &parameters,
+                                   const double              end_time)
     : parameters(parameters)
+    , end_time(end_time)
     , nominal_step(1. / parameters.n_load_steps)
     , step_size(nominal_step)
     , n_steady_needed(parameters.steady_steps)
   {}
+
+
+
+  std::string
+  LoadStepControl::describe_attempt(const double progress,
+                                    const double increment) const
+  {
+    std::ostringstream text;
+    if (end_time > 0.)
+      text << "t " << progress * end_time << " s (step " << increment * end_time
+           << " s)";
+    else
+      text << "load " << progress << " (increment " << increment << ')';
+    return text.str();
+  }
 
 
 
@@ -82,14 +99,18 @@ namespace impm
         return;
       }
 
-    failures << "\n  load " << next << " (increment " << next - load_factor
-             << "): " << record.outcome_description()
-             << ", relative residuals:";
+    failures << "\n  " << describe_attempt(next, next - load_factor) << ": "
+             << record.outcome_description() << ", relative residuals:";
     for (const double residual : record.residuals)
       failures << ' ' << residual;
     std::ostringstream message;
-    message << "Load step " << n_converged + 1 << " (from load factor "
-            << load_factor << " to " << next << "): ";
+    message << "Load step " << n_converged + 1;
+    if (end_time > 0.)
+      message << " (from t = " << load_factor * end_time << " s to "
+              << next * end_time << " s): ";
+    else
+      message << " (from load factor " << load_factor << " to " << next
+              << "): ";
     if (record.outcome == NewtonOutcome::step_refused)
       message << record.refusal;
     else
@@ -128,12 +149,20 @@ namespace impm
       n_steady_needed *= 2;
     untried_steady_growth = false;
     if (step_size < parameters.minimum_step)
-      throw LoadStepFailure(
-        message.str() +
-          " The load increment would fall below 'Solver/Minimum load step' = " +
-          std::to_string(parameters.minimum_step) +
-          ". Attempts:" + failures.str(),
-        load_factor);
+      {
+        std::ostringstream limit;
+        if (end_time > 0.)
+          limit << " The time step would fall below 'Solver/Minimum load "
+                   "step' times 'Time/End time' = "
+                << parameters.minimum_step * end_time << " s.";
+        else
+          limit << " The load increment would fall below 'Solver/Minimum "
+                   "load step' = "
+                << parameters.minimum_step << '.';
+        throw LoadStepFailure(message.str() + limit.str() +
+                                " Attempts:" + failures.str(),
+                              load_factor);
+      }
   }
 
 

@@ -22,13 +22,17 @@ namespace impm
    * repeats the step with half the increment
    * ('Solver/Step control'), or stops the run with a message naming the
    * load step and every failed attempt. The last step lands exactly on the
-   * full load.
+   * full load. In a scene in time the progress from 0 to 1 is the share
+   * of 'Time/End time' reached, and the messages give times in seconds.
    */
   class LoadStepControl
   {
   public:
-    /** @brief The control of the scene's 'Solver' section. */
-    explicit LoadStepControl(const Parameters::Solver &parameters);
+    /** @brief The control of the scene's 'Solver' section; @p end_time is
+     *  the scene's end time in s (0: a scene without time, whose progress
+     *  is the load factor). */
+    explicit LoadStepControl(const Parameters::Solver &parameters,
+                             double                    end_time = 0.);
 
     /** @brief Whether the full load has been reached. */
     bool
@@ -94,11 +98,18 @@ namespace impm
     stalled(const std::vector<double> &residuals);
 
   private:
+    /** @brief A progress and an increment of it as the messages give them:
+     *  "load 0.5 (increment 0.1)" or "t 0.5 s (step 0.1 s)". */
+    std::string
+    describe_attempt(double progress, double increment) const;
+
     const Parameters::Solver &parameters;
-    const double              nominal_step;
-    double                    step_size;
-    double                    load_factor = 0.;
-    unsigned int              n_converged = 0;
+    /** The scene's end time in s (0: none). */
+    const double end_time;
+    const double nominal_step;
+    double       step_size;
+    double       load_factor = 0.;
+    unsigned int n_converged = 0;
     /** The smallest increment a coupling refused in this run
      *  (NewtonOutcome::step_refused): an easy step does not grow the next
      *  to it (not kept in a checkpoint: a resumed run may try it once
