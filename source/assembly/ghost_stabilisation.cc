@@ -80,6 +80,9 @@ namespace impm
   std::string
   GhostStabilisation<dim>::description() const
   {
+    if (explicit_steps)
+      return "ghost stabilisation: not used by explicit steps (they solve no "
+             "system)";
     return "ghost stabilisation: penalty scale " +
            std::to_string(parameters.penalty_scale) + ", fill threshold " +
            std::to_string(parameters.fill_threshold);
@@ -107,8 +110,18 @@ namespace impm
                                    const LoadStepSystem<dim> &,
                                    const std::vector<bool> &touched)
   {
-    penalty.choose_faces(material_points, touched);
+    if (!explicit_steps)
+      penalty.choose_faces(material_points, touched);
     return 0;
+  }
+
+
+
+  template <int dim>
+  void
+  GhostStabilisation<dim>::use_explicit_steps(const double)
+  {
+    explicit_steps = true;
   }
 
 
@@ -121,7 +134,8 @@ namespace impm
     const CouplingRows &,
     std::vector<std::vector<types::global_dof_index>> &blocks)
   {
-    penalty.add_blocks(system, blocks);
+    if (!explicit_steps)
+      penalty.add_blocks(system, blocks);
   }
 
 
@@ -132,7 +146,8 @@ namespace impm
                                       const NodalVector &increment,
                                       NodalVector       &internal_force)
   {
-    penalty.add_forces(increment, 1., internal_force);
+    if (!explicit_steps)
+      penalty.add_forces(increment, 1., internal_force);
   }
 
 

@@ -182,8 +182,9 @@ namespace impm
                           "0, 0",
                           Patterns::List(Patterns::Double(), 2, 3),
                           "The force of each load in N (per unit thickness "
-                          "in 2D) at the full load, one component per "
-                          "dimension.");
+                          "in plane strain; in axisymmetry the whole ring's "
+                          "through the point) at the full load, one "
+                          "component per dimension.");
       }
 
       explicit PointLoad(ParameterHandler &prm)

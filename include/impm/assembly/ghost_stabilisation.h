@@ -54,7 +54,10 @@ namespace impm
    * the penalty acts on the displacement increment, so a converged step is
    * in equilibrium with it. A coupling (the penalty's matrix is the
    * constant part of the load step's matrix); a scene that switches it off
-   * creates none of this.
+   * creates none of this. Explicit steps solve no system and move the
+   * points by the step's start forces alone: there the penalty chooses no
+   * faces and adds no force (use_explicit_steps()), and the start-up
+   * report says so.
    *
    * @tparam dim Space dimension.
    */
@@ -112,12 +115,20 @@ namespace impm
       return penalty.faces();
     }
 
+    /** @brief Explicit steps: the penalty steps aside (it conditions the
+     *  system an implicit step solves; an explicit step solves none, and a
+     *  penalty force on its end would only shift the reactions). */
+    void
+    use_explicit_steps(double surface_stiffness) override;
+
     /** @brief A one-line description for the start-up report. */
     std::string
     description() const;
 
   private:
     const Parameters::Stabilisation parameters;
+    /** Whether the steps are explicit: no faces, no forces, no matrix. */
+    bool explicit_steps = false;
     /** The faces and their matrices (gamma E h). */
     FaceJumpPenalty<dim> penalty;
   };
