@@ -6,6 +6,7 @@
 // it loads the core library (beside the executable in the build tree, in the
 // library directory of an installation) and calls impm_program_main().
 
+#include <impm/base/version.h>
 #include <impm/program/command_line_text.h>
 
 #include <dlfcn.h>
@@ -50,6 +51,14 @@ main(int argc, char **argv)
       {
         if (impm::CommandLineText::launcher_rank() == 0)
           std::cout << impm::CommandLineText::usage;
+        return 0;
+      }
+    else if (std::string(argv[i]) == "--version")
+      {
+        if (impm::CommandLineText::launcher_rank() == 0)
+          std::cout << "IMPM " << impm::Version::impm << " (revision "
+                    << impm::Version::revision << "), built against deal.II "
+                    << impm::Version::deal_ii << std::endl;
         return 0;
       }
   // The stop signals wait (blocked, not lost) until the program has

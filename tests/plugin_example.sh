@@ -21,11 +21,15 @@ trap 'rm -rf "$work" "$prefix"' EXIT
 
 cmake --install "$build" --prefix "$prefix" > log.txt 2>&1 || fail "cmake --install"
 for file in bin/impm lib/libimpm_core.so include/impm/mechanics/material.h \
-  lib/cmake/impm/impmConfig.cmake lib/cmake/impm/impmTargets.cmake \
+  lib/cmake/impm/impmConfig.cmake lib/cmake/impm/impmConfigVersion.cmake \
+  lib/cmake/impm/impmTargets.cmake \
   share/impm/prm/column_compaction.prm share/impm/doc/plugins.md \
   share/impm/README.md; do
   [ -f "$prefix/$file" ] || fail "the install has no $file"
 done
+# The installed program names its version (the one find_package asks for).
+"$prefix/bin/impm" --version | grep -qE "^IMPM 0\.1\.[0-9]+ \(revision [^)]+\), built against deal\.II 9\.[0-9.]+$" ||
+  fail "the installed program's --version"
 # The program is a launcher that links no deal.II and finds the library
 # relative to itself: the prefix moved elsewhere still runs.
 readelf -d "$prefix/bin/impm" | grep NEEDED | grep -q deal &&

@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/version.h>
 #include <impm/io/atomic_file.h>
 #include <impm/postprocess/postprocessor.h>
 
@@ -42,8 +43,11 @@ namespace impm
         // U+FFFD), writes a non-finite number as null and keeps the order
         // of the keys (ordered_json).
         nlohmann::ordered_json json;
-        json["scene"]     = parameters.scene.name;
-        json["dimension"] = dim;
+        json["scene"]           = parameters.scene.name;
+        json["impm_version"]    = Version::impm;
+        json["impm_revision"]   = Version::revision;
+        json["deal_ii_version"] = Version::deal_ii;
+        json["dimension"]       = dim;
         json["processes"] =
           Utilities::MPI::n_mpi_processes(context.communicator);
         json["bodies"] = nlohmann::ordered_json::array();

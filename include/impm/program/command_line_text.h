@@ -49,6 +49,9 @@ namespace impm
       "                                  default and documentation (with the\n"
       "                                  plugins of the scene's Additional\n"
       "                                  shared libraries), and exit\n"
+      "  --version                       print IMPM's version, the revision\n"
+      "                                  of its source and deal.II's version,\n"
+      "                                  and exit\n"
       "  --help                          print this text and exit\n"
       "\n"
       "Run in parallel with: mpirun -np N impm SCENE.prm\n";
