@@ -471,20 +471,6 @@ namespace impm
 
 
   template <int dim>
-  void
-  MaterialPoints<dim>::sort_into_cells(const unsigned int load_step)
-  {
-    const auto n_before = particle_handler.n_global_particles();
-    particle_handler.sort_particles_into_subdomains_and_cells();
-    if (particle_handler.n_global_particles() != n_before)
-      throw CollectiveError("Material points were lost while sorting them "
-                            "into cells in load step " +
-                            std::to_string(load_step) + ".");
-  }
-
-
-
-  template <int dim>
   PointMeasures<dim>
   MaterialPoints<dim>::measure() const
   {
