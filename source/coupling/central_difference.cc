@@ -105,17 +105,14 @@ namespace impm
             << " s is above the stable explicit step " << stable
             << " s (Courant number " << integrator.courant_number
             << ", smallest cell " << h << " m, speed of sound "
-            << std::sqrt(largest) << " m/s"
-            << (contact > 0. ? ", with the rigid bodies' contact penalty "
-                               "factor " +
-                                 Utilities::to_string(contact) :
-                               std::string())
-            << (surface_stiffness > 0. ?
-                  ", with springs of " +
-                    Utilities::to_string(surface_stiffness) + " Pa/m on faces" :
-                  std::string())
-            << (damping.active() ? ", with the stiffness damping" : "")
-            << "): set 'Time/Time step' to at most that.";
+            << std::sqrt(largest) << " m/s";
+        if (contact > 0.)
+          out << ", with the rigid bodies' contact penalty factor " << contact;
+        if (surface_stiffness > 0.)
+          out << ", with springs of " << surface_stiffness << " Pa/m on faces";
+        if (damping.active())
+          out << ", with the stiffness damping";
+        out << "): set 'Time/Time step' to at most that.";
         throw InputError(out.str());
       }
   }
