@@ -81,6 +81,14 @@ namespace impm
         "the cells whose every node carries mass (the cells the points' "
         "supports cover) are written; VTU whatever 'Format', in single "
         "precision (deal.II 9.4).");
+      prm.declare_entry(
+        "Terminal interval",
+        "1",
+        Patterns::Integer(1),
+        "Print the line of every this many converged load steps (or time "
+        "steps) on the terminal; every failed attempt and the last step are "
+        "printed whatever this is, and steps.csv holds every step. For long "
+        "explicit runs, whose steps are many and short (e.g. 100).");
       prm.declare_entry("Quiet",
                         "false",
                         Patterns::Bool(),
@@ -110,6 +118,7 @@ namespace impm
                         "Output/Analytical solution",
                         prm.get("Analytical solution")));
       quiet             = prm.get_bool("Quiet");
+      terminal_interval = prm.get_integer("Terminal interval");
       const auto names  = Utilities::split_string_list(prm.get("Fields"));
       const auto wanted = [&names](const std::string &field) {
         for (const auto &name : names)

@@ -120,8 +120,10 @@ namespace impm
      * nearest the probes. Outside test mode each line ends with the progress
      * (ProgressClock: the time reached, the share of the run done, the
      * attempt's wall time and an estimate of the time left), and the run
-     * with one line of totals; with 'Output/Quiet' (--quiet) only that last
-     * line is printed. No wall time is ever part of the test summary.
+     * with one line of totals; 'Output/Terminal interval' N prints only
+     * every N-th converged step's line (failed attempts and the last step
+     * always); with 'Output/Quiet' (--quiet) only that last line is
+     * printed. No wall time is ever part of the test summary.
      */
     template <int dim>
     class TerminalOutput : public Postprocessor<dim>
@@ -137,7 +139,10 @@ namespace impm
         else if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
           {
             const std::string progress = clock.after(record);
-            if (!context.output.quiet)
+            const bool        shown =
+              !record.converged() || record.last ||
+              record.step_number % context.output.terminal_interval == 0;
+            if (!context.output.quiet && shown)
               std::cout << record.log_line() << "  residual " << std::scientific
                         << std::setprecision(2)
                         << record.newton.final_residual() << std::defaultfloat

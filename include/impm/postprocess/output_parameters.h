@@ -33,6 +33,9 @@ namespace impm
        *  (no description of the scene, no line per load step, no table of
        *  timings): the entry `Quiet`, or the flag --quiet. */
       bool quiet = false;
+      /** Print every this many converged steps' lines (failed attempts and
+       *  the last step always): the entry `Terminal interval`. */
+      unsigned int terminal_interval = 1;
       /** @brief The fields written to the point files. */
       struct Fields
       {

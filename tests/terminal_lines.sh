@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# What a run prints on the terminal outside test mode, on MPIEXEC N
+# processes if given (only the first prints):
+#  1. by default the scene's description, one line per attempt, the table
+#     of timings and one line of totals: the vibrating bar (TESTS/
+#     vibrating_bar.prm), explicit MUSL, 2 s in 400 steps of 0.005 s;
+#  2. 'Output/Terminal interval' = 150: the lines of steps 150, 300 and the
+#     last (400) only; steps.csv still holds all 400;
+#  3. with a cut: the collapse (TESTS/collapse_h1.prm) in 5 nominal load
+#     steps takes 11, three attempts cut; at an interval of 3 the three
+#     cut attempts are printed with steps 3, 6, 9 and the last, 11;
+#  4. --quiet, and 'Output/Quiet' = true: only the line of totals;
+#  5. --quiet on a failing run: no line on standard output, the error's one
+#     line on standard error, a non-zero exit code.
+# Usage: terminal_lines.sh IMPM TESTS [MPIEXEC N]
+tests=$2
+source "$(dirname "$0")/script_helpers.sh" "$@"
+bar=("$tests/vibrating_bar.prm" --overwrite --set "Testing/Enabled=false" --set "Inertia/Integrator=explicit MUSL"
+  --set "Time/End time=2" --set "Time/Time step=0.005")
+
+# 1. Every attempt.
+"${launcher[@]}" "$impm" "${bar[@]}" > out.txt 2> log.txt || fail "the bar failed"
+[ "$(grep -c "^step " out.txt)" -eq 400 ] || fail "not one line per step by default"
+grep -q "^Scene 'vibrating_bar' (2D)" out.txt || fail "no description of the scene"
+grep -q "^| Total wallclock time elapsed since start" out.txt || fail "no table of timings"
+tail -1 out.txt | grep -q "^Finished 'vibrating_bar': 400 load steps (0 cuts)" ||
+  fail "the last line is not the totals"
+
+# 2. Every 150th step and the last.
+"${launcher[@]}" "$impm" "${bar[@]}" --set "Output/Terminal interval=150" > out.txt 2> log.txt ||
+  fail "the bar with a terminal interval failed"
+[ "$(grep "^step " out.txt | awk '{print $2}' | tr '\n' ' ')" = "150 300 400 " ] ||
+  { cp out.txt log.txt; fail "'Terminal interval' = 150 does not print steps 150, 300 and 400"; }
+[ "$(wc -l < results/steps.csv)" -eq 401 ] || fail "steps.csv does not hold every step"
+
+# 3. Failed attempts are printed whatever the interval.
+collapse=("$tests/collapse_h1.prm" --set "Testing/Enabled=false" --set "Solver/Load steps=5" --overwrite
+  --set "Output/Terminal interval=3")
+"${launcher[@]}" "$impm" "${collapse[@]}" > out.txt 2> log.txt || fail "the collapse failed"
+grep -q "^Finished 'collapse_h1': 11 load steps (3 cuts)" out.txt ||
+  { cp out.txt log.txt; fail "the collapse did not take 11 steps with 3 cuts (the test's premise)"; }
+[ "$(grep -c "^step .*: step cut " out.txt)" -eq 3 ] || fail "the cut attempts are not all printed"
+[ "$(grep "^step .*iterations [0-9]* " out.txt | awk '{print $2}' | tr '\n' ' ')" = "3 6 9 11 " ] ||
+  { cp out.txt log.txt; fail "the converged steps printed are not 3, 6, 9 and 11"; }
+
+# 4. Only the totals.
+for quiet in "--quiet" "--set Output/Quiet=true"; do
+  "${launcher[@]}" "$impm" "${bar[@]}" $quiet > out.txt 2> log.txt || fail "the bar failed ($quiet)"
+  [ "$(wc -l < out.txt)" -eq 1 ] && grep -q "^Finished 'vibrating_bar': 400 load steps " out.txt ||
+    { cp out.txt log.txt; fail "$quiet printed more than the line of totals"; }
+done
+
+# 5. A failing run under --quiet: its error alone.
+"${launcher[@]}" "$impm" "${bar[@]}" --quiet --set "Time/Time step=0.5" > out.txt 2> err.txt &&
+  fail "a time step above the stable one ran"
+[ -s out.txt ] && { cp out.txt log.txt; fail "--quiet printed on standard output in a failing run"; }
+grep -q "^Error: Inertia: the time step 0.5 s is above the stable explicit step" err.txt ||
+  { cp err.txt log.txt; fail "--quiet hid the error"; }
+echo "terminal_lines: passed"
