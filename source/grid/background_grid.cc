@@ -163,6 +163,7 @@ namespace impm
     constraints.clear();
     constraints.reinit(relevant_dofs);
     prescribed_dofs.clear();
+    prescribed_dof_faces.clear();
     reaction_dofs.clear();
     columns_with_reactions.clear();
     for (unsigned int face = 0; face < 2 * dim; ++face)
@@ -211,14 +212,20 @@ namespace impm
                     constraints.add_line(dof);
                     if (Parameters::is_prescribed(condition) &&
                         parameters.face_displacements[face][c] != 0.)
-                      prescribed_dofs.emplace_back(
-                        local, parameters.face_displacements[face][c]);
+                      {
+                        prescribed_dofs.emplace_back(
+                          local, parameters.face_displacements[face][c]);
+                        prescribed_dof_faces.push_back(face);
+                      }
                     if (local < n_locally_owned_dofs())
                       reaction_dofs.emplace_back(local, face * dim + c);
                   }
               }
           }
     constraints.close();
+    any_prescribed_dof =
+      Utilities::MPI::logical_or(!prescribed_dofs.empty(),
+                                 dof_handler.get_communicator());
   }
 
 
@@ -258,6 +265,31 @@ namespace impm
   {
     for (const auto &[dof, displacement] : prescribed_dofs)
       increment.local_element(dof) = load_increment * displacement;
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  BackgroundGrid<dim>::prescribed_faces_without_material(
+    const std::vector<bool> &touched) const
+  {
+    std::vector<unsigned int> faces;
+    if (!any_prescribed_dof)
+      return faces;
+    // Per face: 1 where it has prescribed DoFs here, 2 where one of them
+    // is touched; the largest over the processes.
+    std::vector<unsigned int> state(2 * dim, 0);
+    for (unsigned int i = 0; i < prescribed_dofs.size(); ++i)
+      {
+        unsigned int &face = state[prescribed_dof_faces[i]];
+        face = std::max(face, touched[prescribed_dofs[i].first] ? 2u : 1u);
+      }
+    Utilities::MPI::max(state, dof_handler.get_communicator(), state);
+    for (unsigned int face = 0; face < 2 * dim; ++face)
+      if (state[face] == 1)
+        faces.push_back(face);
+    return faces;
   }
 
 

@@ -1,7 +1,11 @@
+#include <deal.II/base/mpi.h>
+
+#include <impm/base/names.h>
 #include <impm/solver/load_step_problem.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 namespace impm
 {
@@ -46,6 +50,7 @@ namespace impm
     const bool start_residual_set = set_start_residual(span.start);
     grid.apply_prescribed_increment(span.target - span.start,
                                     displacement_increment);
+    warn_of_faces_without_material(span);
     TimerOutput::Scope scope(timer, "assembly");
     // The start residual's external force is the end's too where the
     // factor is the same or changes no force (the points are those of the
@@ -79,6 +84,34 @@ namespace impm
     const double d  = (dim == 3 || grid.cartesian().axisymmetric) ? 3. : 2.;
     unloaded_reference =
       1e-5 * largest_modulus * std::pow(volume, (d - 1.) / d);
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepProblem<dim>::warn_of_faces_without_material(const StepSpan &span)
+  {
+    if (!grid.moves_faces() || span.target == span.start)
+      return;
+    for (const unsigned int face :
+         grid.prescribed_faces_without_material(system.touched_dofs()))
+      if (!warned_faces[face])
+        {
+          warned_faces[face] = true;
+          if (Utilities::MPI::this_mpi_process(
+                grid.get_triangulation().get_communicator()) == 0)
+            std::cerr << "Warning: from load factor " << span.start
+                      << " on, no material point reaches the prescribed "
+                         "grid face "
+                      << Names::faces[face]
+                      << " (the material has left the cells along it): its "
+                         "displacement moves nothing, and its reaction is "
+                         "zero. A grid face moves only the material in the "
+                         "cells it bounds; for larger motions use a rigid "
+                         "body."
+                      << std::endl;
+        }
   }
 
 

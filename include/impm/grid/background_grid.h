@@ -215,6 +215,24 @@ namespace impm
                                NodalVector &increment) const;
 
     /**
+     * @brief The faces (boundary ids) with a non-zero prescribed
+     * displacement none of whose prescribed DoFs a point's support reaches
+     * (@p touched: local DoFs, as LoadStepSystem::touched_dofs()): such a
+     * face moves no material. Empty in a scene without prescribed faces
+     * (then nothing is communicated). Collective.
+     */
+    std::vector<unsigned int>
+    prescribed_faces_without_material(const std::vector<bool> &touched) const;
+
+    /** @brief Whether any process has a DoF a face's non-zero prescribed
+     *  displacement moves. */
+    bool
+    moves_faces() const
+    {
+      return any_prescribed_dof;
+    }
+
+    /**
      * @brief The (face * dim + component) pairs that carry reactions, in
      * the order of the face numbering.
      */
@@ -292,6 +310,10 @@ namespace impm
       dofs_of_node;
     /** Prescribed DoFs (local index) and their displacement at full load. */
     std::vector<std::pair<unsigned int, double>> prescribed_dofs;
+    /** The face (boundary id) of each of prescribed_dofs. */
+    std::vector<unsigned int> prescribed_dof_faces;
+    /** Whether any process has a prescribed DoF (set with them). */
+    bool any_prescribed_dof = false;
     /** Owned constrained DoFs (local index) and their face * dim + comp. */
     std::vector<std::pair<unsigned int, unsigned int>> reaction_dofs;
     /** The (face * dim + component) pairs that carry reactions. */

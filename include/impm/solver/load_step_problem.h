@@ -16,6 +16,7 @@
 #include <impm/solver/tangent_check.h>
 #include <impm/system/load_step_system.h>
 
+#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -216,6 +217,17 @@ namespace impm
      *  (no load, no prescribed face moving): the internal force of a
      *  strain of 1e-5 (set in begin(); 0 for a driven step). */
     double unloaded_reference = 0.;
+    /** The prescribed faces already reported as moving no material. */
+    std::array<bool, 6> warned_faces{};
+
+    /**
+     * @brief Report once per face (on standard error) a prescribed grid
+     * face that moves no material in the step @p span (the material has
+     * left the cells along it: its reaction is zero from there on).
+     * Collective; nothing in a scene without prescribed faces.
+     */
+    void
+    warn_of_faces_without_material(const StepSpan &span);
 
     /**
      * @brief The stress update and the internal force with the couplings'
