@@ -134,8 +134,7 @@ namespace impm
     const CouplingRows &,
     std::vector<std::vector<types::global_dof_index>> &blocks)
   {
-    if (!explicit_steps)
-      penalty.add_blocks(system, blocks);
+    penalty.add_blocks(system, blocks);
   }
 
 
@@ -146,8 +145,7 @@ namespace impm
                                       const NodalVector &increment,
                                       NodalVector       &internal_force)
   {
-    if (!explicit_steps)
-      penalty.add_forces(increment, 1., internal_force);
+    penalty.add_forces(increment, 1., internal_force);
   }
 
 

@@ -24,7 +24,8 @@ namespace impm
     Point<dim>                                        lower, upper;
     for (const auto &point : particle_handler)
       {
-        if (point.get_surrounding_cell() != cell)
+        if (cell.state() != IteratorState::valid ||
+            point.get_surrounding_cell() != cell)
           {
             cell  = point.get_surrounding_cell();
             lower = cell->vertex(0);

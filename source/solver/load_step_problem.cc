@@ -95,7 +95,7 @@ namespace impm
     if (!grid.moves_faces() || span.target == span.start)
       return;
     for (const unsigned int face :
-         grid.prescribed_faces_without_material(system.touched_dofs()))
+         grid.prescribed_faces_without_material(system.touched()))
       if (!warned_faces[face])
         {
           warned_faces[face] = true;
@@ -105,7 +105,7 @@ namespace impm
                       << " on, no material point reaches the prescribed "
                          "grid face "
                       << Names::faces[face]
-                      << " (the material has left the cells along it): its "
+                      << " (no material lies in the cells along it): its "
                          "displacement moves nothing, and its reaction is "
                          "zero. A grid face moves only the material in the "
                          "cells it bounds; for larger motions use a rigid "

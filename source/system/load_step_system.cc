@@ -98,6 +98,7 @@ namespace impm
                               const types::global_dof_index n_coupling_rows,
                               const bool                    with_groups)
   {
+    touched_in_step = touched;
     // Owned DoFs in the system: touched and not constrained, numbered
     // contiguously per process.
     const unsigned int      n_owned = grid.n_locally_owned_dofs();

@@ -127,7 +127,8 @@ namespace impm
 
   private:
     const Parameters::Stabilisation parameters;
-    /** Whether the steps are explicit: no faces, no forces, no matrix. */
+    /** Whether the steps are explicit: prepare() then chooses no faces,
+     *  so the penalty adds no blocks, forces or matrix. */
     bool explicit_steps = false;
     /** The faces and their matrices (gamma E h). */
     FaceJumpPenalty<dim> penalty;

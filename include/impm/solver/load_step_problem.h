@@ -222,8 +222,9 @@ namespace impm
 
     /**
      * @brief Report once per face (on standard error) a prescribed grid
-     * face that moves no material in the step @p span (the material has
-     * left the cells along it: its reaction is zero from there on).
+     * face that moves no material in the step @p span (no material lies
+     * in the cells along it: its reaction is zero from there on), from the
+     * DoFs the step's setup found touched (LoadStepSystem::touched()).
      * Collective; nothing in a scene without prescribed faces.
      */
     void

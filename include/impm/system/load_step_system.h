@@ -89,6 +89,14 @@ namespace impm
            const types::global_dof_index n_coupling_rows,
            const bool                    with_groups = true);
 
+    /** @brief The local DoFs the step's points touch, as number() was
+     *  given them (touched_dofs() of the step's setup). */
+    const std::vector<bool> &
+    touched() const
+    {
+      return touched_in_step;
+    }
+
     /** @brief The first row of this process's couplings' unknowns (after
      *  its nodal rows). */
     types::global_dof_index
@@ -281,7 +289,9 @@ namespace impm
     /** The basis of the last evaluate_basis(). */
     BasisType                            basis = BasisType::gimp;
     std::vector<types::global_dof_index> index_in_system;
-    IndexSet                             owned;
+    /** The local DoFs the step's points touch (number()'s argument). */
+    std::vector<bool> touched_in_step;
+    IndexSet          owned;
     /** This process's first row. */
     types::global_dof_index first_row = 0;
     /** This process's rows of nodal DoFs (its first rows; the couplings'
