@@ -4,11 +4,12 @@
 # prm/granular_column_collapse.prm at aspect ratios a = 0.5, 1, 1.5, 4 and
 # 7 (H0 = a L0, L0 = 1 m, h = L0/20 throughout; the grid sized to the
 # expected run-out; 1.5 sqrt(max(1, a)) s at 0.005 s a step) with the FLIP
-# fractions given (default 0.95 and 0.8). Prints per run the front's
+# fractions given (default 0.95 and 0.8; APIC for 'Velocity update' =
+# 'APIC'). Prints per run the front's
 # run-out (L_inf - L0)/L0 from the outermost point, Lube's value, the
 # difference, the kinetic energy left at the end against its peak, and the
 # wall time.
-# Usage: scripts/granular_collapse_study.sh [IMPM] [FLIP FRACTIONS...]
+# Usage: scripts/granular_collapse_study.sh [IMPM] [FLIP FRACTIONS or APIC...]
 impm=${1:-build/impm}
 shift
 fractions=("$@")
@@ -27,11 +28,14 @@ T = round(1.5 * max(1, a) ** 0.5, 2)
 print(X, Y, round(X / h), round(Y / h), T, int(round(T / 0.005)))")"
   for flip in "${fractions[@]}"; do
     out=a${a}_flip$flip
+    # APIC: the affine transfer (FLIP fraction 1) in place of a fraction.
+    update=(--set "Inertia/FLIP fraction=$flip")
+    [ "$flip" = APIC ] && update=(--set "Inertia/FLIP fraction=1" --set "Inertia/Velocity update=APIC")
     start=$(date +%s.%N)
     "$impm" "$scene" --set "Output directory=$out" --set "Grid/Upper corner=$X, $Y" \
       --set "Grid/Number of cells=$NX, $NY" --set "Body 1/Upper corner=1, $a" \
       --set "Time/End time=$T" --set "Solver/Load steps=$N" --set "Output/Interval=$N" \
-      --set "Inertia/FLIP fraction=$flip" > $out.txt 2>&1 || { echo "a = $a, FLIP $flip: failed"; tail -2 $out.txt; continue; }
+      "${update[@]}" > $out.txt 2>&1 || { echo "a = $a, FLIP $flip: failed"; tail -2 $out.txt; continue; }
     end=$(date +%s.%N)
     /usr/bin/python3 - "$out" "$a" "$flip" "$start" "$end" <<'PY'
 import csv, glob, sys

@@ -23,7 +23,10 @@
 #     of J1^2 r), energy within 2e-3 (5.9e-4);
 #  5. the radial mode, explicit MUSL, GIMP, 0.0025 s: 0.20 % and 0.15 %,
 #     period within 0.02 %; energy within 5e-2 (3.2e-2, half a step apart);
-#  6. the radial mode, explicit USL, standard MPM: as case 5 (0.13 %, 0.10 %).
+#  6. the radial mode, explicit USL, standard MPM: as case 5 (0.13 %, 0.10 %);
+#  7. the radial mode, explicit MUSL, GIMP, with APIC ('Inertia/Velocity
+#     update'): as case 5 (0.12 % and 0.09 %, period within 0.015 %,
+#     energy 3.2e-2).
 # Usage: axisymmetric_vibration.sh IMPM TESTS_DIR [MPIEXEC N]
 tests=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -48,4 +51,7 @@ run radial_explicit_musl axisymmetric_radial_mode radial 0.01 5e-2 kinetic_energ
 run radial_explicit_usl_standard axisymmetric_radial_mode radial 0.01 5e-2 kinetic_energy 1e-4 \
   --set "Inertia/Integrator=explicit USL" --set "Time/Time step=0.0025" \
   --set "Material points/Basis=standard MPM"
+run radial_explicit_apic axisymmetric_radial_mode radial 0.01 5e-2 kinetic_energy 1e-4 \
+  --set "Inertia/Integrator=explicit MUSL" --set "Time/Time step=0.0025" \
+  --set "Inertia/Velocity update=APIC"
 echo "all cases passed"

@@ -447,9 +447,15 @@ namespace impm
       material_points.parse_parameters(prm);
       prm.enter_subsection("Gravity");
       gravity_enabled = prm.get_bool("Enabled");
-      const auto g    = get_vector(prm, "Gravity", "Acceleration", dim);
-      for (unsigned int d = 0; d < dim; ++d)
-        gravity[d] = g[d];
+      // A scene without gravity need not give its acceleration (the
+      // default, '0, -10', is a 2D one).
+      gravity = Tensor<1, dim>();
+      if (gravity_enabled)
+        {
+          const auto g = get_vector(prm, "Gravity", "Acceleration", dim);
+          for (unsigned int d = 0; d < dim; ++d)
+            gravity[d] = g[d];
+        }
       prm.leave_subsection();
     }
 

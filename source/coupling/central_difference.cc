@@ -152,7 +152,8 @@ namespace impm
                           const PointSteps<dim>     &steps,
                           std::vector<double>       &increment,
                           std::vector<double>       &velocities,
-                          std::vector<double>       &accelerations)
+                          std::vector<double>       &accelerations,
+                          std::vector<double>       &velocity_gradients)
   {
     const unsigned int  n_local = nodes.n_local();
     std::vector<double> acceleration(n_local), velocity_change(n_local),
@@ -182,10 +183,20 @@ namespace impm
                         acceleration,
                         velocities,
                         accelerations);
+    // APIC: the points' velocity gradient from the nodes' new velocity,
+    // remapped (MUSL) with the points' new velocity (a remap with the
+    // start's gradient, or a gradient of the remapped velocity, lets a
+    // spinning disc break up within a few hundred steps: tried).
+    if (integrator.affine_transfer)
+      velocity_gradients =
+        nodes.velocity_gradients(material_points, steps, new_velocity);
     const std::vector<double> velocity =
       integrator.explicit_order == ExplicitOrder::usl ?
         new_velocity :
-        nodes.remapped_velocity(material_points, steps, velocities);
+        nodes.remapped_velocity(material_points,
+                                steps,
+                                velocities,
+                                velocity_gradients);
     increment.assign(n_local, 0.);
     for (unsigned int i = 0; i < n_local; ++i)
       increment[i] = time_step * velocity[i];
@@ -226,6 +237,7 @@ namespace impm
                           const PointSteps<2> &,
                           std::vector<double> &,
                           std::vector<double> &,
+                          std::vector<double> &,
                           std::vector<double> &);
   template void
   central_difference_step(const NodalMomentum<3> &,
@@ -234,6 +246,7 @@ namespace impm
                           const TimeIntegrator &,
                           const MaterialPoints<3> &,
                           const PointSteps<3> &,
+                          std::vector<double> &,
                           std::vector<double> &,
                           std::vector<double> &,
                           std::vector<double> &);

@@ -10,6 +10,7 @@
 #include <impm/coupling/coupling.h>
 #include <impm/coupling/initial_velocity.h>
 #include <impm/coupling/mass_ghost_penalty.h>
+#include <impm/coupling/newmark_update.h>
 #include <impm/coupling/nodal_momentum.h>
 #include <impm/coupling/stiffness_damping.h>
 #include <impm/coupling/time_integrator.h>
@@ -99,7 +100,10 @@ namespace impm
      * of the points' kinetic energy the nodes cannot represent. A FLIP
      * fraction @f$\phi < 1@f$ blends in PIC: @f$v_p = \phi\,(v_p +
      * \sum_I N_{Ip}\Delta v_I) + (1 - \phi) \sum_I N_{Ip} v_I^{n+1}@f$,
-     * which damps the points' velocity noise.
+     * which damps the points' velocity noise. APIC (`Velocity update`)
+     * takes the nodes' new velocity and its gradient to the points and an
+     * affine field back to the nodes (NodalMomentum): a rigid rotation
+     * stays rigid.
      *
      * The points' `velocity` and `acceleration` are declared point fields
      * (written, kept in checkpoints); the kinetic, elastic (strain) and
@@ -134,7 +138,7 @@ namespace impm
         : integrator(inputs.prm)
         , initial_velocity(inputs.prm)
         , grid(inputs.grid)
-        , nodes(inputs.grid)
+        , nodes(inputs.grid, integrator.affine_transfer)
         , stiffness_damping(integrator)
         , contact_penalty(
             contact_penalty_factor(inputs.parameters.rigid_bodies))
@@ -147,6 +151,15 @@ namespace impm
         if (!inputs.time.in_time())
           throw InputError("Inertia needs time: set 'Time/End time' above 0 "
                            "(the load steps are then time steps).");
+        if (integrator.affine_transfer && integrator.is_explicit() &&
+            inputs.parameters.material_points.basis == BasisType::standard_mpm)
+          throw InputError(
+            "Inertia: 'Velocity update' = 'APIC' with an explicit "
+            "integrator needs 'Material points/Basis' = 'GIMP': with "
+            "standard MPM's weights a node that a point barely reaches has "
+            "a tiny mass and a large change of velocity, which the point's "
+            "velocity gradient weighs fully (a spinning disc breaks up in a "
+            "few hundred steps); use GIMP, or an implicit integrator.");
       }
 
       /** @brief Refuse a time step above the stable explicit step, with
@@ -173,7 +186,11 @@ namespace impm
       PointFields
       point_fields() const override
       {
-        return {{"velocity", dim, true}, {"acceleration", dim, true}};
+        PointFields fields{{"velocity", dim, true},
+                           {"acceleration", dim, true}};
+        if (integrator.affine_transfer)
+          fields.push_back({"velocity_gradient", dim * dim, true});
+        return fields;
       }
 
       std::vector<std::string>
@@ -191,7 +208,8 @@ namespace impm
       void
       initialize_points(MaterialPoints<dim> &material_points) override
       {
-        initial_velocity.initialize(material_points);
+        initial_velocity.initialize(material_points,
+                                    integrator.affine_transfer);
       }
 
       /** @brief A resumed run's points carry their accelerations. */
@@ -308,7 +326,8 @@ namespace impm
               current_system->point_steps,
               explicit_increment,
               point_velocities,
-              point_accelerations);
+              point_accelerations,
+              point_velocity_gradients);
             return;
           }
         if (integrator.alpha_f > 0.)
@@ -441,8 +460,8 @@ namespace impm
         return accepted_force;
       }
 
-      /** @brief The points' new velocity and acceleration (FLIP) and the
-       *  kinetic energy. */
+      /** @brief The points' new velocity and acceleration (and with APIC
+       *  velocity gradient) and the kinetic energy. */
       void
       accept(MaterialPoints<dim>       &material_points,
              const LoadStepSystem<dim> &system,
@@ -450,44 +469,15 @@ namespace impm
       {
         const auto &steps = system.point_steps;
         if (!integrator.is_explicit())
-          {
-            const double c3 = 1. / (2. * integrator.beta) - 1.;
-            // The nodes' new acceleration, velocity and change of velocity
-            // (owned and ghost DoFs: the points read both).
-            std::vector<double> new_acceleration(n_local()),
-              new_velocity(n_local()), velocity_change(n_local());
-            // The start's nodal velocity and acceleration: the momentum
-            // over the mass, lumped or consistent.
-            std::vector<double> start_velocity, start_acceleration;
-            nodes.start_velocity_and_acceleration(
-              material_points,
-              steps,
-              integrator.consistent_mass,
-              integrator.mass_regularisation,
-              start_velocity,
-              start_acceleration);
-            for (unsigned int i = 0; i < n_local(); ++i)
-              {
-                const double v = start_velocity[i];
-                const double a = start_acceleration[i];
-                new_acceleration[i] =
-                  (increment.local_element(i) - time_step * v) /
-                    (integrator.beta * time_step * time_step) -
-                  c3 * a;
-                velocity_change[i] =
-                  time_step * ((1. - integrator.gamma) * a +
-                               integrator.gamma * new_acceleration[i]);
-                new_velocity[i] = v + velocity_change[i];
-              }
-            nodes.update_points(material_points,
-                                steps,
-                                integrator.flip_fraction,
-                                velocity_change,
-                                new_velocity,
-                                new_acceleration,
-                                point_velocities,
-                                point_accelerations);
-          }
+          newmark_point_update(nodes,
+                               increment,
+                               time_step,
+                               integrator,
+                               material_points,
+                               steps,
+                               point_velocities,
+                               point_accelerations,
+                               point_velocity_gradients);
         double energy = 0., elastic_energy = 0.;
         for (const auto &point : material_points.particles())
           {
@@ -503,6 +493,10 @@ namespace impm
         material_points.set_coupling_field("acceleration",
                                            steps,
                                            point_accelerations);
+        if (integrator.affine_transfer)
+          material_points.set_coupling_field("velocity_gradient",
+                                             steps,
+                                             point_velocity_gradients);
         const MPI_Comm communicator =
           grid.get_triangulation().get_communicator();
         kinetic_energy = Utilities::MPI::sum(energy, communicator);
@@ -557,8 +551,10 @@ namespace impm
       const LoadStepSystem<dim> *current_system = nullptr;
       /** The explicit step's increment on the local DoFs. */
       std::vector<double> explicit_increment;
-      /** The points' new velocities and accelerations (by step index). */
-      std::vector<double> point_velocities, point_accelerations;
+      /** The points' new velocities, accelerations and (APIC) velocity
+       *  gradients (by step index). */
+      std::vector<double> point_velocities, point_accelerations,
+        point_velocity_gradients;
       /** The nodes' mass and momentum of the step's start. */
       NodalMomentum<dim> nodes;
       /** The stiffness-proportional damping (inactive at 0). */

@@ -50,7 +50,8 @@ namespace impm
 
   template <int dim>
   void
-  InitialVelocity<dim>::initialize(MaterialPoints<dim> &material_points) const
+  InitialVelocity<dim>::initialize(MaterialPoints<dim> &material_points,
+                                   const bool           gradient) const
   {
     if (!function)
       return;
@@ -60,6 +61,18 @@ namespace impm
         for (unsigned int d = 0; d < dim; ++d)
           v[d] = function->value(state.initial_position(), d);
       });
+    if (gradient)
+      material_points.initialize_coupling_field(
+        "velocity_gradient",
+        [this](const PointState<dim> &state, const ArrayView<double> &g) {
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              const Tensor<1, dim> row =
+                function->gradient(state.initial_position(), i);
+              for (unsigned int j = 0; j < dim; ++j)
+                g[i * dim + j] = row[j];
+            }
+        });
   }
 
 

@@ -13,9 +13,41 @@
 namespace impm
 {
   template <int dim>
-  NodalMomentum<dim>::NodalMomentum(const BackgroundGrid<dim> &grid)
+  NodalMomentum<dim>::NodalMomentum(const BackgroundGrid<dim> &grid,
+                                    const bool                 affine)
     : grid(grid)
+    , affine(affine)
   {}
+
+
+
+  template <int dim>
+  std::array<double, PointSupport<dim>::max_nodes * dim>
+  NodalMomentum<dim>::affine_parts(const PointStep<dim> &step,
+                                   const double         *gradient) const
+  {
+    const CartesianGrid<dim> &cartesian = grid.cartesian();
+    std::array<Point<dim>, PointSupport<dim>::max_nodes> nodes;
+    Point<dim>                                           centre;
+    double                                               weight_sum = 0.;
+    for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+      {
+        nodes[v] = cartesian.node_position(step.support.nodes[v]);
+        centre += step.support.weights[v] * nodes[v];
+        weight_sum += step.support.weights[v];
+      }
+    centre /= weight_sum;
+    std::array<double, PointSupport<dim>::max_nodes * dim> parts;
+    for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          double part = 0.;
+          for (unsigned int j = 0; j < dim; ++j)
+            part += gradient[i * dim + j] * (nodes[v][j] - centre[j]);
+          parts[v * dim + i] = part;
+        }
+    return parts;
+  }
 
 
 
@@ -31,11 +63,16 @@ namespace impm
     const unsigned int velocity_first = layout.coupling_field("velocity");
     const unsigned int acceleration_first =
       layout.coupling_field("acceleration");
+    const unsigned int gradient_first =
+      affine ? layout.coupling_field("velocity_gradient") : 0;
+    std::array<double, PointSupport<dim>::max_nodes * dim> parts{};
     for (const auto &point : material_points.particles())
       {
         const auto            properties = point.get_properties();
         const PointStep<dim> &step       = system.point_steps.of(point);
         const double          m          = PointState<dim>(properties).mass();
+        if (affine)
+          parts = affine_parts(step, &properties[gradient_first]);
         for (unsigned int v = 0; v < step.support.n_nodes; ++v)
           for (unsigned int i = 0; i < dim; ++i)
             {
@@ -43,7 +80,7 @@ namespace impm
               const double       weight = step.support.weights[v] * m;
               nodal_mass.local_element(dof) += weight;
               nodal_momentum.local_element(dof) +=
-                weight * properties[velocity_first + i];
+                weight * (properties[velocity_first + i] + parts[v * dim + i]);
               nodal_mass_acceleration.local_element(dof) +=
                 weight * properties[acceleration_first + i];
             }
@@ -102,11 +139,35 @@ namespace impm
                 a += N * new_acceleration[dof];
               }
             velocities[p * dim + i] =
-              flip_fraction * (properties[velocity_first + i] + dv) +
-              (1. - flip_fraction) * v_new;
+              affine ? v_new :
+                       flip_fraction * (properties[velocity_first + i] + dv) +
+                         (1. - flip_fraction) * v_new;
             accelerations[p * dim + i] = a;
           }
       }
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  NodalMomentum<dim>::velocity_gradients(
+    const MaterialPoints<dim> &material_points,
+    const PointSteps<dim>     &steps,
+    const std::vector<double> &velocity) const
+  {
+    std::vector<double> gradients(steps.size() * dim * dim, 0.);
+    for (const auto &point : material_points.particles())
+      {
+        const unsigned int    p    = steps.index_of(point);
+        const PointStep<dim> &step = steps[p];
+        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              gradients[(p * dim + i) * dim + j] +=
+                velocity[step.dofs[v * dim + i]] * step.support.gradients[v][j];
+      }
+    return gradients;
   }
 
 
@@ -116,19 +177,24 @@ namespace impm
   NodalMomentum<dim>::mass_weighted_sum(
     const MaterialPoints<dim> &material_points,
     const PointSteps<dim>     &steps,
-    const std::vector<double> &values) const
+    const std::vector<double> &values,
+    const double              *gradients) const
   {
     NodalVector sum;
     grid.reinit_vector(sum);
+    std::array<double, PointSupport<dim>::max_nodes * dim> parts{};
     for (const auto &point : material_points.particles())
       {
         const unsigned int    p    = steps.index_of(point);
         const PointStep<dim> &step = steps[p];
         const double m = PointState<dim>(point.get_properties()).mass();
+        if (gradients != nullptr)
+          parts = affine_parts(step, gradients + p * dim * dim);
         for (unsigned int v = 0; v < step.support.n_nodes; ++v)
           for (unsigned int i = 0; i < dim; ++i)
             sum.local_element(step.dofs[v * dim + i]) +=
-              step.support.weights[v] * m * values[p * dim + i];
+              step.support.weights[v] * m *
+              (values[p * dim + i] + parts[v * dim + i]);
       }
     sum.compress(VectorOperation::add);
     sum.update_ghost_values();
@@ -142,10 +208,14 @@ namespace impm
   NodalMomentum<dim>::remapped_velocity(
     const MaterialPoints<dim> &material_points,
     const PointSteps<dim>     &steps,
-    const std::vector<double> &velocities) const
+    const std::vector<double> &velocities,
+    const std::vector<double> &velocity_gradients) const
   {
     const NodalVector updated_momentum =
-      mass_weighted_sum(material_points, steps, velocities);
+      mass_weighted_sum(material_points,
+                        steps,
+                        velocities,
+                        affine ? velocity_gradients.data() : nullptr);
     std::vector<double> velocity(n_local(), 0.);
     for (unsigned int i = 0; i < n_local(); ++i)
       if (in_system_dof[i] && mass(i) > 0.)
@@ -183,10 +253,8 @@ namespace impm
     const PointSteps<dim>     &steps,
     const NodalVector         &x) const
   {
-    const NodalVector product =
-      mass_weighted_sum(material_points,
-                        steps,
-                        at_points(material_points, steps, x));
+    const NodalVector product = mass_weighted_sum(
+      material_points, steps, at_points(material_points, steps, x), nullptr);
     std::vector<double> result(n_local());
     for (unsigned int i = 0; i < n_local(); ++i)
       result[i] = product.local_element(i);

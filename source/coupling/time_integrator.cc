@@ -37,6 +37,22 @@ namespace impm
                       "their velocity plus the nodes' change (FLIP), "
                       "the rest the nodes' new velocity (PIC, which "
                       "damps). 1: FLIP.");
+    prm.declare_entry("Velocity update",
+                      "FLIP/PIC",
+                      Patterns::Selection("FLIP/PIC|APIC"),
+                      "How the points take the nodes' new velocity: "
+                      "'FLIP/PIC' (the blend of 'FLIP fraction'), or "
+                      "'APIC', the affine particle-in-cell transfer "
+                      "(Jiang et al. 2015, with the gradient of the "
+                      "weights): each point takes the nodes' new "
+                      "velocity v_p = sum_I N_Ip v_I and its gradient "
+                      "C_p = sum_I v_I grad N_Ip (a declared point field, "
+                      "'velocity_gradient'), and gives the nodes the "
+                      "momentum of that affine field, m_p N_Ip (v_p + C_p "
+                      "(x_I - x_p)). A rigid rotation stays rigid (FLIP "
+                      "turns it into velocity noise and strain energy, "
+                      "PIC slows it down); it damps far less than PIC. "
+                      "Lumped mass only; 'FLIP fraction' must stay 1.");
     prm.declare_entry("Newmark beta",
                       "0.25",
                       Patterns::Double(0., 0.5),
@@ -124,6 +140,7 @@ namespace impm
                                                        ExplicitOrder::none;
     courant_number         = prm.get_double("Courant number");
     flip_fraction          = prm.get_double("FLIP fraction");
+    affine_transfer        = prm.get("Velocity update") == "APIC";
     generalised_alpha      = name == "generalised-alpha";
     spectral_radius        = prm.get_double("Spectral radius");
     mass_damping           = prm.get_double("Mass damping");
@@ -162,6 +179,18 @@ namespace impm
       throw InputError("Inertia: 'Mass' = 'consistent' needs an implicit "
                        "integrator (Newmark or generalised-alpha); the "
                        "explicit ones are lumped.");
+    if (affine_transfer && flip_fraction < 1.)
+      throw InputError(
+        "Inertia: 'FLIP fraction' = " + prm.get("FLIP fraction") +
+        " blends FLIP with PIC; with 'Velocity update' = "
+        "'APIC' the points take the nodes' new velocity and "
+        "its gradient (no FLIP part): leave 'FLIP fraction' "
+        "at 1.");
+    if (affine_transfer && consistent_mass)
+      throw InputError("Inertia: 'Velocity update' = 'APIC' needs 'Mass' = "
+                       "'lumped': the consistent mass's projection already "
+                       "gives the nodes an affine field of the points' "
+                       "velocities.");
     if (is_explicit())
       return;
     if (!(beta > 0.))
@@ -200,7 +229,9 @@ namespace impm
       out << ", stiffness damping " << stiffness_damping << " s";
     if (local_damping > 0.)
       out << ", local damping " << local_damping;
-    if (flip_fraction < 1.)
+    if (affine_transfer)
+      out << ", APIC velocity update";
+    else if (flip_fraction < 1.)
       out << ", FLIP fraction " << flip_fraction;
     return out.str();
   }

@@ -100,9 +100,13 @@ namespace impm
       }
 
     failures << "\n  " << describe_attempt(next, next - load_factor) << ": "
-             << record.outcome_description() << ", relative residuals:";
-    for (const double residual : record.residuals)
-      failures << ' ' << residual;
+             << record.outcome_description();
+    if (!record.explicit_step)
+      {
+        failures << ", relative residuals:";
+        for (const double residual : record.residuals)
+          failures << ' ' << residual;
+      }
     std::ostringstream message;
     message << "Load step " << n_converged + 1;
     if (end_time > 0.)
@@ -114,14 +118,15 @@ namespace impm
     if (record.outcome == NewtonOutcome::step_refused)
       message << record.refusal;
     else
-      message << "Newton " << record.outcome_description() << '.';
+      message << (record.explicit_step ? "the explicit step: " : "Newton ")
+              << record.outcome_description() << '.';
     if (!record.smaller_step_may_pass)
       throw LoadStepFailure(message.str(), load_factor);
     if (record.outcome == NewtonOutcome::step_refused)
       refused_increment = std::min(refused_increment, next - load_factor);
     // A residual at the round-off of the internal forces cannot fall
     // further: say so, and what to do.
-    if (record.last_internal_force_norm > 0. &&
+    if (!record.explicit_step && record.last_internal_force_norm > 0. &&
         record.last_norm < 1e-12 * record.last_internal_force_norm)
       message << " Its residual (" << record.last_norm
               << " N) is at the round-off level of the internal forces ("

@@ -158,6 +158,7 @@ namespace impm
   LoadStepProblem<dim>::explicit_step()
   {
     NewtonRecord record;
+    record.explicit_step = true;
     {
       TimerOutput::Scope scope(timer, "point update");
       const std::string  failure =

@@ -135,6 +135,22 @@ namespace impm
     }
 
     /**
+     * @brief Position of the node with linear index @p index
+     * (node_index()).
+     */
+    Point<dim>
+    node_position(std::uint64_t index) const
+    {
+      Point<dim> x;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          x[d] = node_coordinate(d, index % n_nodes(d));
+          index /= n_nodes(d);
+        }
+      return x;
+    }
+
+    /**
      * @brief Position of node @p i in direction @p d.
      */
     double

@@ -115,7 +115,8 @@ namespace impm
    * with @f$f_I = -r_I@f$ (the integrator's local and mass damping), their
    * new velocity @f$v_I + \Delta t\, a_I@f$, the points' new velocity and
    * acceleration (NodalMomentum::update_points() with the integrator's
-   * FLIP fraction) and the increment @f$\Delta t\,v_I@f$ with the nodes'
+   * FLIP fraction; with APIC also their velocity gradient) and the
+   * increment @f$\Delta t\,v_I@f$ with the nodes'
    * new velocity (USL) or that of the updated points' momentum (MUSL, the
    * integrator's order), on the local DoFs of the system (zero
    * elsewhere). Collective.
@@ -130,7 +131,8 @@ namespace impm
                           const PointSteps<dim>     &steps,
                           std::vector<double>       &increment,
                           std::vector<double>       &velocities,
-                          std::vector<double>       &accelerations);
+                          std::vector<double>       &accelerations,
+                          std::vector<double>       &velocity_gradients);
 } // namespace impm
 
 #endif

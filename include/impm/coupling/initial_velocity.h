@@ -40,9 +40,11 @@ namespace impm
       return static_cast<bool>(function);
     }
 
-    /** @brief Set the points' `velocity` field (nothing if inactive). */
+    /** @brief Set the points' `velocity` field, and with @p gradient
+     *  their `velocity_gradient` (APIC) to the expressions' gradient (by
+     *  central differences; row-major); nothing if inactive. */
     void
-    initialize(MaterialPoints<dim> &material_points) const;
+    initialize(MaterialPoints<dim> &material_points, const bool gradient) const;
 
     /** @brief "initial velocity EXPRESSION". */
     std::string

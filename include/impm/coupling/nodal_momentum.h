@@ -7,6 +7,7 @@
 #include <impm/system/dense_block_adder.h>
 #include <impm/system/load_step_system.h>
 
+#include <array>
 #include <vector>
 
 namespace impm
@@ -26,6 +27,16 @@ namespace impm
    * back to the points, remapped_velocity() maps the points' updated
    * momentum to the nodes again (the modified update, MUSL).
    *
+   * With the affine transfer (APIC) each point also carries the gradient
+   * @f$C_p@f$ of the nodes' velocity (the declared point field
+   * `velocity_gradient`, row-major) and gives the nodes the momentum of
+   * the affine field about the centre of its weights, @f$ar x_p =
+   * \sum_I N_{Ip} x_I / \sum_I N_{Ip}@f$: @f$p_I = \sum_p N_{Ip} m_p (v_p +
+   * C_p (x_I - ar x_p))@f$. The affine part adds no momentum in total
+   * (@f$\sum_I N_{Ip}(x_I - ar x_p) = 0@f$), and a velocity field linear
+   * in space (a rigid rotation) reaches the nodes exactly, however few
+   * points share them.
+   *
    * The points' velocity and acceleration are the declared point fields
    * `velocity` and `acceleration` of the couplings (PointLayout).
    *
@@ -35,8 +46,8 @@ namespace impm
   class NodalMomentum
   {
   public:
-    /** @brief Transfers on @p grid. */
-    explicit NodalMomentum(const BackgroundGrid<dim> &grid);
+    /** @brief Transfers on @p grid; with @p affine those of APIC. */
+    NodalMomentum(const BackgroundGrid<dim> &grid, const bool affine);
 
     /** @brief Map the points' mass, momentum and mass times acceleration
      *  to the nodes of this step (owned and ghost DoFs). Collective. */
@@ -98,7 +109,9 @@ namespace impm
      * @brief The points' new velocity and acceleration from the nodes'
      * (local DoFs): @f$v_p = \phi\,(v_p + \sum_I N_{Ip}\,\Delta v_I) + (1 -
      * \phi) \sum_I N_{Ip}\, v_I^{n+1}@f$ (FLIP fraction @f$\phi@f$),
-     * @f$a_p = \sum_I N_{Ip}\, a_I@f$.
+     * @f$a_p = \sum_I N_{Ip}\, a_I@f$; with the affine transfer @f$v_p =
+     * \sum_I N_{Ip}\, v_I^{n+1}@f$ (velocity_gradients() gives its
+     * gradient).
      * @param material_points The points (their velocity at the start).
      * @param steps The points' data of the step (their weights).
      * @param flip_fraction The FLIP fraction @f$\phi@f$.
@@ -117,15 +130,28 @@ namespace impm
                   std::vector<double>       &accelerations) const;
 
     /**
+     * @brief The gradient at each point of the nodal velocity @p velocity
+     * (local DoFs), @f$C_p = \sum_I v_I \otimes \nabla N_{Ip}@f$, by step
+     * index and its dim x dim entries (row-major): the affine transfer's
+     * `velocity_gradient`.
+     */
+    std::vector<double>
+    velocity_gradients(const MaterialPoints<dim> &material_points,
+                       const PointSteps<dim>     &steps,
+                       const std::vector<double> &velocity) const;
+
+    /**
      * @brief The nodes' velocity of the points' momentum with the
-     * velocities @p velocities (by step index and axis), over the mass of
-     * map_points(), on the local DoFs of the system (zero elsewhere).
-     * Collective.
+     * velocities @p velocities (by step index and axis; with the affine
+     * transfer, and their gradients @p velocity_gradients, by step index
+     * and dim x dim), over the mass of map_points(), on the local DoFs of
+     * the system (zero elsewhere). Collective.
      */
     std::vector<double>
     remapped_velocity(const MaterialPoints<dim> &material_points,
                       const PointSteps<dim>     &steps,
-                      const std::vector<double> &velocities) const;
+                      const std::vector<double> &velocities,
+                      const std::vector<double> &velocity_gradients) const;
 
     /**
      * @brief The consistent mass matrix times @p x (ghosted local DoFs):
@@ -205,12 +231,23 @@ namespace impm
     /**
      * @brief @f$\sum_p N_{Ip}\, m_p\, x_p@f$ of the point values @p values
      * (by step index and axis) at the nodes, summed over the processes and
-     * ghosted. Collective.
+     * ghosted; with @p gradients (by step index, dim x dim), @f$\sum_p
+     * N_{Ip}\, m_p (x_p + G_p (x_I - \bar x_p))@f$. Collective.
      */
     NodalVector
     mass_weighted_sum(const MaterialPoints<dim> &material_points,
                       const PointSteps<dim>     &steps,
-                      const std::vector<double> &values) const;
+                      const std::vector<double> &values,
+                      const double              *gradients) const;
+
+    /**
+     * @brief The affine field's value at each node of a point's support
+     * less its value at the centre of the weights: @f$G (x_v - \bar
+     * x_p)@f$, by node and axis, for the gradient @p gradient (dim x dim,
+     * row-major).
+     */
+    std::array<double, PointSupport<dim>::max_nodes * dim>
+    affine_parts(const PointStep<dim> &step, const double *gradient) const;
 
     /** @brief Solve @f$(M_c + \epsilon M_L) x = b@f$ (see
      *  consistent_velocity_and_acceleration()). */
@@ -221,6 +258,8 @@ namespace impm
                           const NodalVector         &right_hand_side) const;
 
     const BackgroundGrid<dim> &grid;
+    /** Whether the transfer is APIC's. */
+    const bool affine;
     /** The scratch of the consistent mass matrix's point blocks. */
     DenseBlockAdder   block_adder;
     NodalVector       nodal_mass, nodal_momentum, nodal_mass_acceleration;

@@ -31,8 +31,8 @@ namespace impm
    * \rho_\infty/(\rho_\infty + 1)@f$, @f$\gamma = 1/2 - \alpha_m +
    * \alpha_f@f$, @f$\beta = (1 - \alpha_m + \alpha_f)^2/4@f$; Newmark has
    * @f$\alpha_m = \alpha_f = 0@f$), or the explicit central difference
-   * rule with its Courant number; the mass damping and the FLIP fraction
-   * of all.
+   * rule with its Courant number; the mass damping and the points'
+   * velocity update (FLIP/PIC or APIC) of all.
    */
   struct TimeIntegrator
   {
@@ -70,6 +70,9 @@ namespace impm
     double courant_number;
     /** The points' velocity update's FLIP fraction (1: FLIP, 0: PIC). */
     double flip_fraction;
+    /** Whether the points carry the nodes' velocity gradient and give
+     *  the nodes an affine velocity field (APIC; FLIP fraction 1). */
+    bool affine_transfer;
     /** Whether the implicit integrator is generalised-alpha. */
     bool generalised_alpha;
     /** Generalised-alpha's spectral radius at infinity. */

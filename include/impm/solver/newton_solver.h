@@ -135,6 +135,9 @@ namespace impm
     std::string refusal;
     /** Whether a smaller step may pass (false: the run stops). */
     bool smaller_step_may_pass = true;
+    /** Whether the step was explicit: no Newton solve, no residual (its
+     *  outcome is that of the explicit update). */
+    bool explicit_step = false;
 
     /** @brief The outcome's name, with the cause of a failed linear solve
      *  or the reason of a refused step. */
