@@ -51,8 +51,11 @@ namespace impm
                       "momentum of that affine field, m_p N_Ip (v_p + C_p "
                       "(x_I - x_p)). A rigid rotation stays rigid (FLIP "
                       "turns it into velocity noise and strain energy, "
-                      "PIC slows it down); it damps far less than PIC. "
-                      "Lumped mass only; 'FLIP fraction' must stay 1.");
+                      "PIC slows it down). It damps far less than PIC "
+                      "but more than FLIP where the velocity varies "
+                      "within a cell: two colliding elastic discs lose 44 "
+                      "% of their energy (FLIP 0.2 %, PIC 97 %). Lumped "
+                      "mass only; 'FLIP fraction' must stay 1.");
     prm.declare_entry("Newmark beta",
                       "0.25",
                       Patterns::Double(0., 0.5),
