@@ -151,15 +151,11 @@ namespace impm
         if (!inputs.time.in_time())
           throw InputError("Inertia needs time: set 'Time/End time' above 0 "
                            "(the load steps are then time steps).");
-        if (integrator.affine_transfer && integrator.is_explicit() &&
-            inputs.parameters.material_points.basis == BasisType::standard_mpm)
-          throw InputError(
-            "Inertia: 'Velocity update' = 'APIC' with an explicit "
-            "integrator needs 'Material points/Basis' = 'GIMP': with "
-            "standard MPM's weights a node that a point barely reaches has "
-            "a tiny mass and a large change of velocity, which the point's "
-            "velocity gradient weighs fully (a spinning disc breaks up in a "
-            "few hundred steps); use GIMP, or an implicit integrator.");
+        integrator.check_velocity_update(
+          inputs.parameters.material_points.basis,
+          !inputs.parameters.rigid_bodies.empty(),
+          Utilities::MPI::this_mpi_process(
+            inputs.grid.get_triangulation().get_communicator()) == 0);
       }
 
       /** @brief Refuse a time step above the stable explicit step, with

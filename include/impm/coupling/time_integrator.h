@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <impm/basis/basis_functions.h>
+
 #include <string>
 
 namespace impm
@@ -59,6 +61,18 @@ namespace impm
     {
       return (1. - alpha_m) / (1. - alpha_f);
     }
+
+    /**
+     * @brief Check the velocity update against the scene: APIC with an
+     * explicit integrator needs GIMP (an InputError for @p basis standard
+     * MPM); with an implicit one and @p rigid_bodies, it warns on standard
+     * error (if @p print) unless generalised-alpha damps the contact's
+     * unresolved oscillation (spectral radius at most 0.5).
+     */
+    void
+    check_velocity_update(const BasisType basis,
+                          const bool      rigid_bodies,
+                          const bool      print) const;
 
     /** @brief One line: the integrator and its parameters. */
     std::string
