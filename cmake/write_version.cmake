@@ -15,4 +15,24 @@ if(GIT_FOUND)
     set(IMPM_REVISION "${_revision}")
   endif()
 endif()
-configure_file(${TEMPLATE} ${OUTPUT} @ONLY)
+# Several builds may run this at once (each deal.II-style test runs `make`
+# for its target while others run): each writes a file of its own and
+# renames it over the header only if the text differs, and a rename is
+# atomic, so that no build sees the header half-written or a temporary
+# file that another removed (configure_file alone shares one temporary
+# name: a concurrent run failed with "No such file or directory").
+string(TIMESTAMP _now "%s%f")
+string(RANDOM LENGTH 16 RANDOM_SEED ${_now} _suffix)
+set(_own "${OUTPUT}.${_now}.${_suffix}")
+file(READ ${TEMPLATE} _template)
+string(CONFIGURE "${_template}" _text @ONLY)
+if(EXISTS ${OUTPUT})
+  file(READ ${OUTPUT} _current)
+  if(_current STREQUAL _text)
+    return()
+  endif()
+endif()
+get_filename_component(_directory ${OUTPUT} DIRECTORY)
+file(MAKE_DIRECTORY ${_directory})
+file(WRITE ${_own} "${_text}")
+file(RENAME ${_own} ${OUTPUT})
