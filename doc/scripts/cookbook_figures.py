@@ -196,6 +196,7 @@ def say(scene, text):
 
 
 # ---------------------------------------------------------------- scenes
+IMPM = None  # the executable (main() sets it), for scenes that run twice
 PRANDTL_VM = (2 + math.pi) * 2e4 / math.sqrt(2) * 0.5 / 1e3  # kN, half footing
 
 
@@ -535,6 +536,27 @@ def two_bodies(scene, output):
                                                           weight))
 
 
+def spinning_disc(scene, output):
+    """The APIC run's last state, and its strain energy against FLIP's (the
+    page's second command, run here beside the first)."""
+    picture(scene, output, lambda p: np.hypot(p["velocity_0"], p["velocity_1"]),
+            "speed (m/s)", title="spinning disc, APIC: the speed after one revolution")
+    flip = output + "_flip"
+    subprocess.run([IMPM, os.path.join(root, "prm", scene + ".prm"), "--quiet",
+                    "--set", "Output directory=" + flip, "--set", "Output/Interval=0",
+                    "--set", "Inertia/Velocity update=FLIP/PIC"], check=True,
+                   stdout=subprocess.DEVNULL)
+    fig, ax = new_plot("time (s)", "strain energy / total energy",
+                       "spinning disc: the rotation's energy that goes into strain")
+    for directory, label in ((output, "APIC"), (flip, "FLIP")):
+        rows = steps(directory)
+        share = column(rows, "strain_energy") / rows[0]["total_energy"]
+        ax.semilogy(column(rows, "time"), np.maximum(share, 1e-8), "-", label=label)
+        say(scene, "%s: largest strain energy %.3g of the total" % (label, share.max()))
+    ax.legend(fontsize=8)
+    save_plot(fig, scene)
+
+
 def wheel_rolling(scene, output):
     picture(scene, output, "plastic_multiplier", "plastic multiplier", cmap="magma_r",
             extent=((0, 0.5), (5, 3)))
@@ -595,6 +617,8 @@ def main():
     parser.add_argument("--keep", action="store_true", help="keep the runs' folders")
     args = parser.parse_args()
     impm = os.path.abspath(args.impm)
+    global IMPM
+    IMPM = impm
     os.makedirs(images, exist_ok=True)
     commands = figure_commands()
     names = args.only or sorted(commands)
