@@ -4,6 +4,9 @@
 #include <impm/base/errors.h>
 #include <impm/coupling/initial_velocity.h>
 
+#include <cmath>
+#include <sstream>
+
 namespace impm
 {
   template <int dim>
@@ -55,24 +58,48 @@ namespace impm
   {
     if (!function)
       return;
+    // A value that is not finite (a root of a negative number, a division
+    // by zero) is named with the first point it gives it, on every process.
+    std::string local_error;
+    const auto  check =
+      [&](const double value, const Point<dim> &position, const char *what) {
+        if (std::isfinite(value) || !local_error.empty())
+          return;
+        std::ostringstream out;
+        out << "Parameter 'Inertia/Initial velocity' = '" << expression
+            << "' gives " << what << " that is not finite (" << value
+            << ") at the point initially at (" << position
+            << "): it must be finite wherever the bodies' points lie.";
+        local_error = out.str();
+      };
     material_points.initialize_coupling_field(
       "velocity",
-      [this](const PointState<dim> &state, const ArrayView<double> &v) {
+      [&](const PointState<dim> &state, const ArrayView<double> &v) {
         for (unsigned int d = 0; d < dim; ++d)
-          v[d] = function->value(state.initial_position(), d);
+          {
+            v[d] = function->value(state.initial_position(), d);
+            check(v[d], state.initial_position(), "a velocity");
+          }
       });
     if (gradient)
       material_points.initialize_coupling_field(
         "velocity_gradient",
-        [this](const PointState<dim> &state, const ArrayView<double> &g) {
+        [&](const PointState<dim> &state, const ArrayView<double> &g) {
           for (unsigned int i = 0; i < dim; ++i)
             {
               const Tensor<1, dim> row =
                 function->gradient(state.initial_position(), i);
               for (unsigned int j = 0; j < dim; ++j)
-                g[i * dim + j] = row[j];
+                {
+                  g[i * dim + j] = row[j];
+                  check(row[j],
+                        state.initial_position(),
+                        "a velocity gradient (APIC's, by central "
+                        "differences)");
+                }
             }
         });
+    throw_if_any_failed(local_error, material_points.get_communicator(), false);
   }
 
 

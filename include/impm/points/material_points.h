@@ -131,6 +131,13 @@ namespace impm
       return property_layout;
     }
 
+    /** @brief The processes that share the points. */
+    MPI_Comm
+    get_communicator() const
+    {
+      return communicator;
+    }
+
     /** @brief Number of points on all processes. */
     types::particle_index
     n_global_points() const
