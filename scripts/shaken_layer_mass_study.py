@@ -12,7 +12,8 @@ consistent mass (an ODE solver to 1e-10). Prints a Markdown table: the
 largest difference from the exact solution over the 6 s, as a share of
 the largest displacement, and the wall time.
 
-Usage: scripts/shaken_layer_mass_study.py build/impm   (about a minute)
+Usage: scripts/shaken_layer_mass_study.py build/impm   (about a minute;
+needs SciPy: apt-get install python3-scipy)
 """
 import csv
 import os
