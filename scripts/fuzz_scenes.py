@@ -105,6 +105,9 @@ def main():
     parser.add_argument("--list", action="store_true",
                         help="print every case's mutation and first line")
     arguments = parser.parse_args()
+    # The cases run in directories of their own: a relative path to the
+    # program (build/impm) is taken from where the script was started.
+    arguments.impm = os.path.abspath(arguments.impm)
 
     scenes = sorted(path for path in glob.glob(
         os.path.join(arguments.prm_directory, "*.prm"))
