@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """Find an order of deal.II's shared libraries that makes a program start faster.
 
-Most of an `impm` start (0.25-0.35 s on the 2-core test machine) is the dynamic
-loader binding the 320,000 symbols the 200 libraries of deal.II's Debian build
-refer to: each lookup visits the libraries of the program's global scope in
-turn until one defines the symbol, and in the order the linker gives (the
-program's direct dependencies, then theirs) a lookup visits 35 of them on
-average. Naming the libraries that define the most-looked-up symbols first on
+Most of an `impm` start (0.25-0.5 s on the 2-core test machine) is the
+dynamic loader binding the 320,000 symbols the 200 libraries of deal.II's
+Debian build refer to: each lookup visits the libraries of the search scope
+in turn until one defines the symbol, and in the order the linker gives (the
+program's direct dependencies, then theirs) a lookup from the core library
+visited 39 of them on average. Naming the libraries that define the most-looked-up symbols first on
 the program's link line shortens that walk.
 
 A library may only move ahead of others if no symbol changes its meaning: this
@@ -14,7 +14,8 @@ script moves a library ahead of the ones it jumps over only when every symbol
 both define is weak in both (a C++ template or inline function, the same code
 by the one-definition rule); C libraries that define the same function
 (ScaLAPACK's copy of BLAS routines, PETSc's copies of MPI's Fortran
-sentinels) keep their order. libc, libm, libstdc++ and libgcc_s stay first.
+sentinels) keep their order. The program's own global scope (libc, libm,
+libstdc++, libgcc_s) and LIBRARY itself stay first.
 
 Usage: link_order.py LIBRARY PROGRAM [ARGUMENTS...]
   runs PROGRAM ARGUMENTS under LD_DEBUG (for IMPM, from a build configured
@@ -25,7 +26,7 @@ Usage: link_order.py LIBRARY PROGRAM [ARGUMENTS...]
   on standard error the mean number of libraries a lookup visits before and
   after.
 The list printed is cmake/link_order.txt (see CMakeLists.txt); the figures
-are in doc/testing.md.
+are in doc/benchmarks/start_and_progress.md.
 """
 import collections
 import os
