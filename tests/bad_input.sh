@@ -252,6 +252,12 @@ expect base_shaking_repeated_time "the times must increase \\(line 2\\)." - -- "
 expect absorbing_without_time "Absorbing boundary needs time: set 'Time/End time' above 0." - -- "$base" --set "Absorbing boundary/Enabled=true" --set "Absorbing boundary/Density=1" --set "Absorbing boundary/Young's modulus=1"
 expect absorbing_without_material "Absorbing boundary: give the 'Density' and 'Young's modulus' \\(> 0\\)" - -- "$base" --set "Time/End time=1" --set "Absorbing boundary/Enabled=true"
 expect explicit_above_stable_step "Inertia: the time step 0.5 s is above the stable explicit step .* s \\(Courant number 0.5, smallest cell" - -- "$base" --set "Time/End time=1" --set "Time/Time step=0.5" --set "Inertia/Enabled=true" --set "Inertia/Integrator=explicit MUSL"
+# More steps than a run counts (they wrapped to another number, or none),
+# a step outside double precision's range for the integrators, and small
+# times named as given (not "0.000000").
+expect time_steps_beyond_count "Parameter 'Time/Time step' = 1e-09 over 'Time/End time' = 10 gives 1e\\+10 steps, more than a run can count \\(4294967295\\): take a larger time step." - -- "$base" --set "Time/End time=10" --set "Time/Time step=1e-9"
+expect time_step_beyond_range "'Time/End time' = 1e\\+300 in 100 steps gives a time step of 1e\\+298 s, outside the range of 1e-150 to 1e150 s" - -- "$base" --set "Time/End time=1e300" --set "Solver/Load steps=100" --set "Inertia/Enabled=true"
+expect time_step_above_end_small "Parameter 'Time/Time step' = 2e-05 is not allowed: it must be at most 'Time/End time' = 1e-05." - -- "$base" --set "Time/End time=1e-5" --set "Time/Time step=2e-5"
 expect explicit_with_dashpots "Absorbing boundary: its dashpots act on the step's mean velocity, which an explicit step does not solve for" - -- "$base" --set "Time/End time=1" --set "Time/Time step=0.01" --set "Inertia/Enabled=true" --set "Inertia/Integrator=explicit MUSL" --set "Absorbing boundary/Enabled=true" --set "Absorbing boundary/Density=1" --set "Absorbing boundary/Young's modulus=1"
 expect explicit_cell_pressures "Material points/Cell pressure unknowns: the cell pressures are unknowns of the load step's system, which an explicit step does not solve" - -- "$base" --set "Time/End time=1" --set "Time/Time step=0.01" --set "Inertia/Enabled=true" --set "Inertia/Integrator=explicit MUSL" --set "Material points/F-bar=true" --set "Material points/Cell pressure unknowns=true"
 expect explicit_force_driven "Rigid body 1: 'Force-driven components' make its displacement an unknown of the load step's system, which an explicit step does not solve" - -- "$(dirname "$base")/contact_plate_force_driven.prm" --set "Time/End time=1" --set "Time/Time step=0.0001" --set "Inertia/Enabled=true" --set "Inertia/Integrator=explicit USL"
@@ -259,6 +265,10 @@ expect explicit_springs_above_stable_step "Inertia: the time step 0.005 s is abo
 expect inertia_consistent_explicit "Inertia: 'Mass' = 'consistent' needs an implicit integrator" - -- "$base" --set "Time/End time=1" --set "Time/Time step=0.01" --set "Inertia/Enabled=true" --set "Inertia/Integrator=explicit MUSL" --set "Inertia/Mass=consistent"
 expect mass_ghost_explicit "Inertia: 'Mass ghost penalty' acts on the matrix of the implicit integrators; an explicit one has none" - -- "$base" --set "Time/End time=1" --set "Time/Time step=0.01" --set "Inertia/Enabled=true" --set "Inertia/Integrator=explicit MUSL" --set "Inertia/Mass ghost penalty=0.1"
 expect point_history_region "Point history: 'Region lower corner' must lie below 'Region upper corner' in every coordinate" - -- "$base" --set "Point history/Region lower corner=2, 2" --set "Point history/Region upper corner=1, 3"
+# A followed position off the grid (its nearest point a corner of a body,
+# followed silently) and a region without points (an empty history).
+expect point_history_off_grid "Point history: position 2 \\(1e\\+09, 1\\) lies outside the grid, from \\(0, 0\\) to \\(16, 8\\): no point can be near it." also_parallel -- "$base" --set "Point history/Positions=1, 1; 1e9, 1"
+expect point_history_empty_region "Point history: the region from \\(15, 7\\) to \\(16, 8\\) holds no material point at the start." also_parallel -- "$base" --set "Point history/Region lower corner=15, 7" --set "Point history/Region upper corner=16, 8"
 expect local_damping_implicit "Inertia: 'Local damping' needs an explicit integrator" - -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Local damping=0.5"
 expect initial_velocity_not_finite "Parameter 'Inertia/Initial velocity' = 'sqrt\\(-1 - x\\); 0' gives a velocity that is not finite \\(-?nan\\) at the point initially at \\(" also_parallel -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Initial velocity=sqrt(-1 - x); 0"
 expect apic_with_flip "Inertia: 'FLIP fraction' = 0.9 blends FLIP with PIC; with 'Velocity update' = 'APIC'" - -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Velocity update=APIC" --set "Inertia/FLIP fraction=0.9"
@@ -273,8 +283,8 @@ expect region_on_free_face "'Grid/Region y\\+' limits 'Condition y\\+' to a part
 expect face_displacement_not_prescribed "'Grid/Displacement y\\+' is not zero, but 'Condition y\\+' does not prescribe the face's motion" also_parallel -- "$base" --set "Grid/Condition y+=fixed" --set "Grid/Displacement y+=0, -0.01"
 expect strength_reduction_inertia "'Strength reduction/Enabled' = 'true' needs a quasi-static scene" - -- "$base" --set "Strength reduction/Enabled=true" --set "Time/End time=1" --set "Inertia/Enabled=true"
 expect inertia_without_time "Inertia needs time: set 'Time/End time' above 0 \\(the load steps are then time steps\\)." - -- "$base" --set "Inertia/Enabled=true"
-expect time_step_without_end_time "Parameter 'Time/Time step' = 0.100000 needs 'Time/End time' above 0" - -- "$base" --set "Time/Time step=0.1"
-expect time_step_above_end_time "Parameter 'Time/Time step' = 2.000000 is not allowed: it must be at most 'Time/End time' = 1.000000." - -- "$base" --set "Time/End time=1" --set "Time/Time step=2"
+expect time_step_without_end_time "Parameter 'Time/Time step' = 0.1 needs 'Time/End time' above 0" - -- "$base" --set "Time/Time step=0.1"
+expect time_step_above_end_time "Parameter 'Time/Time step' = 2 is not allowed: it must be at most 'Time/End time' = 1." - -- "$base" --set "Time/End time=1" --set "Time/Time step=2"
 expect load_factor_without_time "Parameter 'Time/Load factor' = 't' needs 'Time/End time' above 0" - -- "$base" --set "Time/Load factor=t"
 expect load_factor_bad_expression "Parameter 'Time/Load factor' = 'sin\\(t' is not allowed: it must be an expression in t" - -- "$base" --set "Time/End time=1" --set "Time/Load factor=sin(t"
 expect load_factor_infinite "Parameter 'Time/Load factor' = '1/t' is not allowed: it must be an expression in t" - -- "$base" --set "Time/End time=1" --set "Time/Load factor=1/t"

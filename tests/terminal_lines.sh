@@ -11,7 +11,11 @@
 #     cut attempts are printed with steps 3, 6, 9 and the last, 11;
 #  4. --quiet, and 'Output/Quiet' = true: only the line of totals;
 #  5. --quiet on a failing run: no line on standard output, the error's one
-#     line on standard error, a non-zero exit code.
+#     line on standard error, a non-zero exit code;
+#  6. a step's time resolves its time step: the bar over 2e-4 s in steps of
+#     1e-5 s prints t 0.000010 s, 0.000020 s, ... 0.000200 s (four decimals
+#     printed 0.0000 for all of them), and in steps of 5e-9 s 5.000e-09 s
+#     to 2.000e-08 s.
 # Usage: terminal_lines.sh IMPM TESTS [MPIEXEC N]
 tests=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -56,4 +60,15 @@ done
 [ -s out.txt ] && { cp out.txt log.txt; fail "--quiet printed on standard output in a failing run"; }
 grep -q "^Error: Inertia: the time step 0.5 s is above the stable explicit step" err.txt ||
   { cp err.txt log.txt; fail "--quiet hid the error"; }
+# 6. The time to the step's resolution.
+"${launcher[@]}" "$impm" "${bar[@]}" --set "Time/End time=2e-4" --set "Time/Time step=1e-5" \
+  > out.txt 2> log.txt || fail "the bar in steps of 1e-5 s failed"
+expected=$(awk 'BEGIN { for (k = 1; k <= 20; ++k) printf "%.6f ", k * 1e-5 }')
+[ "$(grep "^step " out.txt | sed 's/.*  t \([^ ]*\) s .*/\1/' | tr '\n' ' ')" = "$expected" ] ||
+  { cp out.txt log.txt; fail "the times of steps of 1e-5 s are not 0.000010 to 0.000200"; }
+"${launcher[@]}" "$impm" "${bar[@]}" --set "Time/End time=2e-8" --set "Time/Time step=5e-9" \
+  > out.txt 2> log.txt || fail "the bar in steps of 5e-9 s failed"
+[ "$(grep "^step " out.txt | sed 's/.*  t \([^ ]*\) s .*/\1/' | tr '\n' ' ')" = \
+  "5.000e-09 1.000e-08 1.500e-08 2.000e-08 " ] ||
+  { cp out.txt log.txt; fail "the times of steps of 5e-9 s are not 5.000e-09 to 2.000e-08"; }
 echo "terminal_lines: passed"

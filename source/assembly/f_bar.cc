@@ -1,6 +1,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <impm/assembly/f_bar.h>
+#include <impm/base/errors.h>
 #include <impm/system/load_step_system.h>
 
 #include <algorithm>
@@ -541,9 +542,9 @@ namespace impm
       return "F-bar with cell pressures: the points of a body in a cell "
              "share one pressure, an unknown, and their volume is the "
              "cell's" +
-             (stabilisation > 0. ? "; pressure-jump stabilisation " +
-                                     std::to_string(stabilisation) :
-                                   std::string());
+             (stabilisation > 0. ?
+                "; pressure-jump stabilisation " + number_text(stabilisation) :
+                std::string());
     return "F-bar: each point's volume change is the mean of the points of "
            "its body in its cell";
   }

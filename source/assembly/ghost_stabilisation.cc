@@ -1,5 +1,6 @@
 // Ghost stabilisation as a coupling: the stiffness's face penalty.
 #include <impm/assembly/ghost_stabilisation.h>
+#include <impm/base/errors.h>
 
 #include <algorithm>
 
@@ -84,8 +85,8 @@ namespace impm
       return "ghost stabilisation: not used by explicit steps (they solve no "
              "system)";
     return "ghost stabilisation: penalty scale " +
-           std::to_string(parameters.penalty_scale) + ", fill threshold " +
-           std::to_string(parameters.fill_threshold);
+           number_text(parameters.penalty_scale) + ", fill threshold " +
+           number_text(parameters.fill_threshold);
   }
 
 

@@ -88,4 +88,15 @@ namespace impm
     out << value << " " << units[unit];
     return out.str();
   }
+
+
+
+  std::string
+  number_text(const double value)
+  {
+    std::ostringstream out;
+    out.precision(6);
+    out << value;
+    return out.str();
+  }
 } // namespace impm

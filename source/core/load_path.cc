@@ -58,7 +58,7 @@ namespace impm
       prm.leave_subsection();
       if (!in_time() && time_step > 0.)
         throw InputError(
-          "Parameter 'Time/Time step' = " + std::to_string(time_step) +
+          "Parameter 'Time/Time step' = " + number_text(time_step) +
           " needs 'Time/End time' above 0 (without an end "
           "time the scene has no time).");
       if (!in_time() && !load_factor.empty())
@@ -68,10 +68,22 @@ namespace impm
                          "load steps).");
       if (time_step > end_time)
         throw InputError(
-          "Parameter 'Time/Time step' = " + std::to_string(time_step) +
+          "Parameter 'Time/Time step' = " + number_text(time_step) +
           " is not allowed: it must be at most 'Time/End "
           "time' = " +
-          std::to_string(end_time) + ".");
+          number_text(end_time) + ".");
+      // The run counts its steps in an unsigned int: more would wrap to a
+      // different number of steps (or none) without a word.
+      if (time_step > 0. &&
+          end_time / time_step >
+            static_cast<double>(std::numeric_limits<unsigned int>::max()))
+        throw InputError(
+          "Parameter 'Time/Time step' = " + number_text(time_step) +
+          " over 'Time/End time' = " + number_text(end_time) + " gives " +
+          number_text(end_time / time_step) +
+          " steps, more than a run can count (" +
+          std::to_string(std::numeric_limits<unsigned int>::max()) +
+          "): take a larger time step.");
       // Check the expression here, so that a wrong one is reported with
       // the scene's other input errors.
       LoadPath check(*this);
@@ -136,7 +148,7 @@ namespace impm
     const double value = load_factor_of_time->value(Point<1>(time(progress)));
     if (!std::isfinite(value))
       throw InputError("Parameter 'Time/Load factor' is not finite at t = " +
-                       std::to_string(time(progress)) + " s.");
+                       number_text(time(progress)) + " s.");
     return value;
   }
 

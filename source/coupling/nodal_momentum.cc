@@ -305,7 +305,7 @@ namespace impm
             "Inertia: the consistent mass's conjugate gradients did not "
             "reach 1e-12 of the right-hand side in 1000 iterations "
             "(residual " +
-            std::to_string(std::sqrt(dot(r, r)) / norm) +
+            number_text(std::sqrt(dot(r, r)) / norm) +
             "); raise 'Inertia/Mass regularisation'.");
         direction.update_ghost_values();
         const std::vector<double> mass_times_direction =

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -19,6 +20,28 @@ namespace impm
 {
   namespace
   {
+    /** @brief Coordinates for a message: "1, 2.5". */
+    std::string
+    coordinates_text(const std::vector<double> &coordinates)
+    {
+      std::string text;
+      for (const double x : coordinates)
+        text += (text.empty() ? "" : ", ") + number_text(x);
+      return text;
+    }
+
+
+
+    /** @brief The coordinates of @p point. */
+    template <int dim>
+    std::vector<double>
+    corner(const Point<dim> &point)
+    {
+      return std::vector<double>(point.begin_raw(), point.end_raw());
+    }
+
+
+
     /**
      * @brief `point_history.csv`: the points nearest to the initial
      * positions that subsection "Point history" names (`Positions`), one
@@ -59,6 +82,24 @@ namespace impm
             throw InputError("Point history: 'Region lower corner' must lie "
                              "below 'Region upper corner' in every "
                              "coordinate.");
+        // A position off the grid is a slip (a point is always on it): its
+        // nearest point would be some corner of a body, followed silently.
+        const auto &grid = context.parameters.grid;
+        for (unsigned int k = 0; k < positions.size(); ++k)
+          for (unsigned int d = 0; d < dim; ++d)
+            if (positions[k][d] < grid.lower_corner[d] ||
+                positions[k][d] > grid.upper_corner[d])
+              {
+                std::ostringstream message;
+                message << "Point history: position " << k + 1 << " ("
+                        << coordinates_text(positions[k])
+                        << ") lies outside the grid, from ("
+                        << coordinates_text(corner(grid.lower_corner))
+                        << ") to ("
+                        << coordinates_text(corner(grid.upper_corner))
+                        << "): no point can be near it.";
+                throw InputError(message.str());
+              }
       }
 
       /** @brief Declare `Positions` in the current subsection. */
@@ -73,15 +114,17 @@ namespace impm
           "y; ... with one coordinate per axis; smallest id on a tie) "
           "through the run in point_history.csv: at the start and after "
           "each converged load step, their position, displacement, stress "
-          "and declared fields. Empty: no history.");
-        prm.declare_entry("Region lower corner",
-                          "",
-                          Patterns::Anything(),
-                          "Follow also every point whose initial position "
-                          "lies in the box from this corner (x, y) to "
-                          "'Region upper corner', after the points of "
-                          "'Positions', by id (a large box makes a large "
-                          "file). Empty: no region.");
+          "and declared fields. A position must lie on the grid. Empty: no "
+          "history.");
+        prm.declare_entry(
+          "Region lower corner",
+          "",
+          Patterns::Anything(),
+          "Follow also every point whose initial position "
+          "lies in the box from this corner (x, y) to "
+          "'Region upper corner', after the points of "
+          "'Positions', by id (a large box makes a large "
+          "file); it must hold a point at the start. Empty: no region.");
         prm.declare_entry("Region upper corner",
                           "",
                           Patterns::Anything(),
@@ -191,6 +234,15 @@ namespace impm
         for (const auto &part :
              Utilities::MPI::all_gather(context.communicator, local))
           in_region.insert(in_region.end(), part.begin(), part.end());
+        if (in_region.empty())
+          {
+            std::ostringstream message;
+            message << "Point history: the region from ("
+                    << coordinates_text(region_lower[0]) << ") to ("
+                    << coordinates_text(region_upper[0])
+                    << ") holds no material point at the start.";
+            throw InputError(message.str());
+          }
         std::sort(in_region.begin(), in_region.end());
         ids.insert(ids.end(), in_region.begin(), in_region.end());
       }

@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <impm/base/errors.h>
 #include <impm/base/names.h>
 #include <impm/contact/rigid_contact.h>
 #include <impm/postprocess/column_solution.h>
@@ -49,6 +50,39 @@ namespace impm
 
 
     /**
+     * @brief A step's time for its line, resolving a tenth of the attempt's
+     * time step @p step: four decimals at least ("0.5910"), more for short
+     * steps ("0.000120" for steps of 1e-5 s), and in scientific notation
+     * from 1e6 s or for steps below 1e-8 s, with the digits that tell one
+     * step from the next ("1.20000e-06", "1.221e+08").
+     */
+    std::string
+    time_text(const double time, const double step)
+    {
+      std::ostringstream text;
+      const int          decimals =
+        step > 0. ?
+                   std::max(4,
+                   static_cast<int>(std::ceil(-std::log10(step) - 1e-3)) + 1) :
+                   4;
+      if (std::abs(time) < 1e6 && decimals <= 9)
+        text << std::fixed << std::setprecision(decimals) << time;
+      else
+        {
+          const double steps =
+            step > 0. ? std::max(std::abs(time) / step, 1.) : 1.;
+          const int digits =
+            std::clamp(static_cast<int>(std::ceil(std::log10(steps))) + 2,
+                       4,
+                       15);
+          text << std::scientific << std::setprecision(digits - 1) << time;
+        }
+      return text.str();
+    }
+
+
+
+    /**
      * @brief The wall time of each load-step attempt and an estimate of the
      * time left: the progress still to go (of 0 to 1, StepRecord's
      * target_progress) times the wall time per unit of progress over the
@@ -91,7 +125,14 @@ namespace impm
         std::ostringstream text;
         text << std::fixed;
         if (record.end_time >= 0.)
-          text << "  t " << std::setprecision(4) << record.end_time << " s";
+          {
+            const double step =
+              record.target_progress > 0. ?
+                record.end_time *
+                  (1. - record.start_progress / record.target_progress) :
+                0.;
+            text << "  t " << time_text(record.end_time, step) << " s";
+          }
         text << "  " << std::setprecision(1) << 100. * reached << "%"
              << "  step " << format_duration(wall);
         if (reached < 1. && recent_progress > 0.)
@@ -387,8 +428,7 @@ namespace impm
                 "not checked" :
               statistics.max_tangent_difference <= 1e-6 ?
                 "yes" :
-                "NO (" + std::to_string(statistics.max_tangent_difference) +
-                  ")")
+                "NO (" + number_text(statistics.max_tangent_difference) + ")")
           << (statistics.tangent_columns_across_kinks > 0 ?
                 " (" + std::to_string(statistics.tangent_columns_across_kinks) +
                   (statistics.tangent_columns_across_kinks == 1 ? " column" :

@@ -335,7 +335,7 @@ namespace impm
   {
     const double limit = settings.checkpoint.wall_time_limit;
     if (limit > 0. && Utilities::MPI::max(elapsed, communicator) > limit)
-      return "'Checkpoint/Wall time limit' = " + std::to_string(limit) +
+      return "'Checkpoint/Wall time limit' = " + number_text(limit) +
              " s passed";
     return "";
   }

@@ -150,6 +150,17 @@ namespace impm
 
 
   /**
+   * @brief @p value for a message, to six significant digits without
+   * trailing zeros ("1e-05", "0.01", "2.5e+10", "inf"). std::to_string()
+   * prints six decimals, which turns a time step of 1e-7 s into
+   * "0.000000".
+   */
+  std::string
+  number_text(const double value);
+
+
+
+  /**
    * @brief @p text with every run of white space (line breaks included)
    * replaced by one blank, and none at either end.
    */
