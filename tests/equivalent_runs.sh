@@ -51,6 +51,15 @@
 #     under a plate, F-bar and F-bar with cell pressures on their squeezed
 #     cylinders (each with its matrix checked against central differences
 #     of the internal force), and the cylinder under its own weight.
+# 11. A body that crosses a symmetry plane (a face with a roller) is the
+#     body cut at it, its traction included: the block of
+#     effect_traction_block reaching 1 m beyond x- (its y+ traction was
+#     spread over 3 m, the metre outside on the points next to the plane:
+#     the base's reaction 6 instead of 4, in the summary's scale, and the
+#     largest vertical stress -0.918 instead of -1) and the cylinder of
+#     axisymmetric_cylinder reaching 0.5 m across the axis (its top ring
+#     taken as pi (1 - 0.5^2) m^2 instead of pi) print what they print
+#     cut at the plane.
 # Values are compared with numdiff at the suite's tolerances.
 # Usage: equivalent_runs.sh IMPM TESTS_DIRECTORY [MPIEXEC N]
 tests=$2
@@ -176,5 +185,14 @@ for scene in axisymmetric_tangent_plastic f_bar_axisymmetric_tangent \
   grep -q "^material points: " ${scene}_ul.txt || fail "$scene printed no summary"
   compare ${scene}_ul.txt $scene.txt \
     "in axisymmetry the updated Lagrangian form differs from the previously converged one ($scene)"
+done
+for case in "effect_traction_block -1, 0" "axisymmetric_cylinder -0.5, 0"; do
+  scene=${case%% *}
+  [ -f $scene.txt ] || run $scene
+  "${launcher[@]}" "$impm" "$tests/$scene.prm" --overwrite \
+    --set "Body 1/Lower corner=${case#* }" > ${scene}_across.txt 2> /dev/null ||
+    fail "$scene across its symmetry plane did not run"
+  compare ${scene}_across.txt $scene.txt \
+    "a body across a symmetry plane differs from the body cut at it ($scene)"
 done
 echo "equivalent_runs: every pair of runs agrees"

@@ -250,6 +250,12 @@ namespace impm
               grid.ring_length(lattice_face_centre(point.second, f, spacing));
     for (auto piece : pieces)
       {
+        // A body may cross a symmetry plane (a roller face): its part
+        // beyond the grid has no points and carries no load. The pieces
+        // are cut at lattice lines, among them the grid's faces, so a
+        // piece lies wholly inside or outside.
+        if (!grid.contains(piece.midpoint))
+          continue;
         // A side chosen with a region: in 2D the region clips each piece
         // to its part inside, in every direction (exact for straight
         // sides). Boundary = region, and 3D: a piece is in when its

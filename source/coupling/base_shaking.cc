@@ -162,7 +162,7 @@ namespace impm
           "s and one acceleration in m/s^2 per axis, separated by spaces, "
           "tabs or commas ('#' starts a comment line); a relative path is "
           "read from the directory impm runs in. Linear between the rows, "
-          "zero after the last.");
+          "the first row's before it, zero after the last.");
         prm.declare_entry("Scale",
                           "1",
                           Patterns::Double(),
