@@ -1,7 +1,7 @@
 // The Traction effect's total force against the traction times the length
 // or area of the loaded boundary, for a box, a disc and a polygon in 2D and
-// a sphere and a box in 3D, by side and by region alone, and the face
-// weights that spread each share over the grid (they must sum to one).
+// a sphere, a cylinder and a box in 3D, by side and by region alone, and the
+// face weights that spread each share over the grid (they must sum to one).
 //
 // Grid [0, 4]^d, 8 cells per direction, 2 points per cell and direction
 // (spacing 0.25 m): the points are the lattice sites inside each body, as
@@ -27,6 +27,23 @@
 //    a region: 4 pi 1.3^2 = 21.23716634;
 // 6. box [0.5, 2.5] x [0.5, 3] x [1, 2.5] by the region [0, 4]^3: the whole
 //    surface 2 (2 x 2.5 + 2 x 1.5 + 2.5 x 1.5) = 23.5 (lattice faces).
+// 8. bodies across the grid's faces (symmetry planes; the part outside is
+//    cut off and carries nothing): the box [-1, 2.5] x [0.5, 3], side y+:
+//    2.5 (it carried 3.5 on the points next to x = 0); the disc centred
+//    on x = 0, side y+: pi 1.3 / 2; the sphere centred at (0, 0, 2.04),
+//    side z+: 2 pi 1.3^2 / 4 (the sectors come in multiples of four).
+// 9. cylinder, base centre (2.02, 1.97, 0.6), radius 1.3, height 2.5: side
+//    z+ (the top disc, each lattice cell's exact part): pi 1.3^2; side x-
+//    (half of its side): pi 1.3 x 2.5; the whole surface by a region:
+//    2 pi 1.3^2 + 2 pi 1.3 x 2.5; centred on the axis x = y = 0 (a quarter
+//    model): z- pi 1.3^2 / 4, y+ (the half facing +y, of which the part in
+//    x > 0) pi 1.3 x 2.5 / 2; centred at (0.3, 0.2), its top in x, y > 0:
+//    with u = x - 0.3, s = sqrt(1.3^2 - u^2), k = sqrt(1.3^2 - 0.2^2), the
+//    integral of 0.2 + s over -0.3 < u < k and of 2 s over k < u < 1.3,
+//    2.03280385289 (Simpson's rule on 2 million intervals: 2.0328038527).
+//    Before, a cylinder's ends and side carried their lattice faces (the
+//    quarter model's top 0.96 % too large), and a body's parts beyond the
+//    grid loaded the points next to the plane.
 // 7. Cook's membrane scaled by 1/16, (0, 0), (3, 2.75), (3, 3.75), (0, 2.75),
 //    side x+: the edges whose outward normal has a positive x component,
 //    the right edge (length 1) and the lower, slanted edge (normal
@@ -250,6 +267,40 @@ main(int argc, char **argv)
         "region",
         4. * M_PI * 1.3 * 1.3,
         {0., 0., 0., 4., 4., 4.});
+
+  // A body across the grid's faces (a symmetry plane: the part beyond is
+  // cut off) carries the load of its part inside only (case 8 above).
+  Body<2> box_across      = box;
+  box_across.lower_corner = Point<2>(-1., 0.5);
+  check("box across x = 0", box_across, "y+", 2.5);
+  Body<2> disc_across = disc;
+  disc_across.center  = Point<2>(0., 1.97);
+  check("disc across x = 0", disc_across, "y+", 0.5 * M_PI * 1.3);
+  Body<3> sphere_across = sphere;
+  sphere_across.center  = Point<3>(0., 0., 2.04);
+  check("quarter sphere", sphere_across, "z+", 0.5 * M_PI * 1.3 * 1.3);
+
+  // Case 9: the cylinder.
+  Body<3> cylinder = sphere;
+  cylinder.shape   = Body<3>::Shape::cylinder;
+  cylinder.center  = Point<3>(2.02, 1.97, 0.6);
+  cylinder.height  = 2.5;
+  check("cylinder", cylinder, "z+", M_PI * 1.3 * 1.3);
+  check("cylinder", cylinder, "x-", M_PI * 1.3 * 2.5);
+  check("cylinder",
+        cylinder,
+        "region",
+        2. * M_PI * 1.3 * 1.3 + 2. * M_PI * 1.3 * 2.5,
+        {0., 0., 0., 4., 4., 4.});
+  Body<3> cylinder_across = cylinder;
+  cylinder_across.center  = Point<3>(0., 0., 0.6);
+  check("quarter cylinder", cylinder_across, "z-", 0.25 * M_PI * 1.3 * 1.3);
+  check("quarter cylinder", cylinder_across, "y+", 0.5 * M_PI * 1.3 * 2.5);
+  cylinder_across.center = Point<3>(0.3, 0.2, 0.6);
+  check("cylinder across x = 0 and y = 0, off its axis",
+        cylinder_across,
+        "z+",
+        2.0328038528856567);
 
   Body<3> box_3d      = sphere;
   box_3d.shape        = Body<3>::Shape::box;

@@ -1,6 +1,6 @@
 // The true boundary of a body in pieces, for the loads on it (Traction):
 // lattice cuts of boxes, discs and polygons in 2D, Archimedes' zones of a
-// sphere in 3D.
+// sphere and the rings and strips of a cylinder in 3D.
 
 #include <impm/core/body.h>
 
@@ -36,6 +36,59 @@ namespace impm
         }
       return parts;
     }
+
+
+
+    /**
+     * The area of the disc of radius @p R about the origin within the
+     * rectangle [x0, x1] x [y0, y1]: the integral over x of the chord's
+     * part between y0 and y1, in closed form between the abscissae where
+     * the circle crosses y = y0 or y = y1 (there the integrand changes
+     * form).
+     */
+    double
+    disc_in_rectangle(const double R,
+                      const double x0,
+                      const double x1,
+                      const double y0,
+                      const double y1)
+    {
+      const auto half_chord = [&](const double x) {
+        return std::sqrt(std::max(0., R * R - x * x));
+      };
+      // The antiderivative of half_chord.
+      const auto integral = [&](const double x) {
+        const double c = std::clamp(x, -R, R);
+        return 0.5 * (c * half_chord(c) + R * R * std::asin(c / R));
+      };
+      std::vector<double> breaks = {std::max(x0, -R), std::min(x1, R)};
+      if (!(breaks[1] > breaks[0]))
+        return 0.;
+      for (const double y : {y0, y1})
+        if (std::abs(y) < R)
+          for (const double x : {-half_chord(y), half_chord(y)})
+            if (x > breaks[0] && x < breaks[1])
+              breaks.push_back(x);
+      std::sort(breaks.begin(), breaks.end());
+      double area = 0.;
+      for (unsigned int k = 0; k + 1 < breaks.size(); ++k)
+        {
+          const double a = breaks[k], b = breaks[k + 1];
+          const double middle = half_chord(0.5 * (a + b));
+          // Which bound is the chord's and which the rectangle's holds
+          // between the breaks.
+          const bool   upper_is_chord = middle < y1;
+          const bool   lower_is_chord = -middle > y0;
+          const double upper          = upper_is_chord ? middle : y1;
+          const double lower          = lower_is_chord ? -middle : y0;
+          if (!(upper > lower))
+            continue;
+          const double chord_part = integral(b) - integral(a);
+          area += (upper_is_chord ? chord_part : y1 * (b - a)) -
+                  (lower_is_chord ? -chord_part : y0 * (b - a));
+        }
+      return area;
+    }
   } // namespace
 
 
@@ -56,6 +109,8 @@ namespace impm
                            sign > 0 ? center[axis] + radius : center[axis],
                            spacing,
                            pieces);
+        else if (shape == Shape::cylinder)
+          add_cylinder_pieces(axis, sign, origin, spacing, pieces);
         return pieces;
       }
     const unsigned int j  = dim == 2 ? 1 - axis : 0;
@@ -136,6 +191,13 @@ namespace impm
               origin,
               spacing,
               pieces);
+          break;
+        case Shape::cylinder:
+          // Both ends and the two halves of the side: all of it once.
+          if constexpr (dim == 3)
+            for (const unsigned int axis : {2u, 0u})
+              for (const double sign : {1., -1.})
+                add_cylinder_pieces(axis, sign, origin, spacing, pieces);
           break;
         case Shape::box:
         case Shape::disc:
@@ -237,10 +299,12 @@ namespace impm
         const double r = std::sqrt(
           std::max(0.,
                    radius * radius - (u - center[axis]) * (u - center[axis])));
+        // A multiple of four: a quarter model's symmetry planes through the
+        // centre fall between sectors.
         const unsigned int n_sectors =
-          std::max(4u,
-                   static_cast<unsigned int>(
-                     std::ceil(2. * M_PI * r / finest - 1e-9)));
+          4u * std::max(1u,
+                        static_cast<unsigned int>(
+                          std::ceil(2. * M_PI * r / finest / 4. - 1e-9)));
         const double dphi = 2. * M_PI / n_sectors;
         for (unsigned int sector = 0; sector < n_sectors; ++sector)
           {
@@ -253,6 +317,87 @@ namespace impm
           }
       }
   }
+
+
+  template <int dim>
+  void
+  Body<dim>::add_cylinder_pieces(const unsigned int          axis,
+                                 const double                sign,
+                                 const Point<dim>           &origin,
+                                 const Tensor<1, dim>       &spacing,
+                                 std::vector<BoundaryPiece> &pieces) const
+  {
+    if constexpr (dim == 3)
+      {
+        const double finest     = std::min(spacing[0], spacing[1]);
+        const auto   n_quarters = [&](const double arc) {
+          return std::max(
+            1u, static_cast<unsigned int>(std::ceil(arc / finest / 4. - 1e-9)));
+        };
+        if (axis == 2)
+          {
+            // The flat end, cut at the lattice lines in x and y: each
+            // lattice cell's part of the disc at the cell's centre (a
+            // point's place), so a point inside carries its lattice face
+            // and one at the rim the part of the disc in its cell.
+            Tensor<1, dim> normal;
+            normal[2] = sign;
+            for (const auto &[x0, x1] : lattice_cuts(center[0] - radius,
+                                                     center[0] + radius,
+                                                     origin[0],
+                                                     spacing[0]))
+              for (const auto &[y0, y1] : lattice_cuts(center[1] - radius,
+                                                       center[1] + radius,
+                                                       origin[1],
+                                                       spacing[1]))
+                {
+                  const double area = disc_in_rectangle(radius,
+                                                        x0 - center[0],
+                                                        x1 - center[0],
+                                                        y0 - center[1],
+                                                        y1 - center[1]);
+                  if (!(area > 0.))
+                    continue;
+                  Point<dim> x;
+                  x[0] = 0.5 * (x0 + x1);
+                  x[1] = 0.5 * (y0 + y1);
+                  x[2] = center[2] + (sign > 0 ? height : 0.);
+                  pieces.push_back({x, area, normal});
+                }
+            return;
+          }
+        // The half of the side facing sign along x or y, from the angle
+        // where it starts: an even number of sectors puts the plane
+        // through the axis across the half between two of them.
+        const unsigned int n_sectors = 2 * n_quarters(2. * M_PI * radius);
+        const double       dphi      = M_PI / n_sectors;
+        const double start = axis == 0 ? (sign > 0 ? -0.5 * M_PI : 0.5 * M_PI) :
+                                         (sign > 0 ? 0. : M_PI);
+        for (const auto &[a, b] :
+             lattice_cuts(center[2], center[2] + height, origin[2], spacing[2]))
+          for (unsigned int k = 0; k < n_sectors; ++k)
+            {
+              const double   phi = start + (k + 0.5) * dphi;
+              Tensor<1, dim> normal;
+              normal[0]    = std::cos(phi);
+              normal[1]    = std::sin(phi);
+              Point<dim> x = center;
+              x[0] += radius * normal[0];
+              x[1] += radius * normal[1];
+              x[2] = 0.5 * (a + b);
+              pieces.push_back({x, radius * dphi * (b - a), normal});
+            }
+      }
+    else
+      {
+        (void)axis;
+        (void)sign;
+        (void)origin;
+        (void)spacing;
+        (void)pieces;
+      }
+  }
+
 
 
   // The helpers are instantiated through these two.

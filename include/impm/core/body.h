@@ -104,7 +104,8 @@ namespace impm
      * disc, the polygon's edges facing that way, cut where they cross the
      * lattice lines @f$x_j = o_j + m\,s_j@f$ of the other axis j (@p origin
      * o, @p spacing s); in 3D the half sphere in zones of equal height
-     * along the axis (of about @p spacing), each cut into equal sectors.
+     * along the axis (of about @p spacing), each cut into equal sectors,
+     * and a cylinder's end or half its side (add_cylinder_pieces()).
      * Their sizes add up to the length or area of that part of the
      * boundary, to round-off. Empty for a box in 3D (its lattice faces are
      * exact).
@@ -118,7 +119,8 @@ namespace impm
     /**
      * @brief The whole boundary in pieces, each part once (as
      * boundary_pieces(); a polygon's edges cut across their longer extent,
-     * a sphere in zones along z): for loads on the sides a region selects.
+     * a sphere in zones along z, a cylinder's ends and side): for loads on
+     * the sides a region selects.
      * Empty for a box in 3D.
      */
     std::vector<BoundaryPiece>
@@ -233,6 +235,22 @@ namespace impm
                      const double                high,
                      const Tensor<1, dim>       &spacing,
                      std::vector<BoundaryPiece> &pieces) const;
+
+    /**
+     * @brief Add the cylinder's pieces facing @p sign along @p axis (3D):
+     * for z its flat end cut at the lattice lines in x and y (each lattice
+     * cell's part of the disc, at the cell's centre); for x or y the half
+     * of its side, cut at the lattice lines in z and into an even number
+     * of sectors (area R dphi dz), so that the plane through the axis
+     * across the half (a quarter model's symmetry plane) falls between
+     * pieces. Every piece's area is exact.
+     */
+    void
+    add_cylinder_pieces(const unsigned int          axis,
+                        const double                sign,
+                        const Point<dim>           &origin,
+                        const Tensor<1, dim>       &spacing,
+                        std::vector<BoundaryPiece> &pieces) const;
 
     /**
      * @brief Refuse a polygon whose edges cross or touch other than at
