@@ -267,8 +267,8 @@ expect mass_ghost_explicit "Inertia: 'Mass ghost penalty' acts on the matrix of 
 expect point_history_region "Point history: 'Region lower corner' must lie below 'Region upper corner' in every coordinate" - -- "$base" --set "Point history/Region lower corner=2, 2" --set "Point history/Region upper corner=1, 3"
 # A followed position off the grid (its nearest point a corner of a body,
 # followed silently) and a region without points (an empty history).
-expect point_history_off_grid "Point history: position 2 \\(1e\\+09, 1\\) lies outside the grid, from \\(0, 0\\) to \\(16, 8\\): no point can be near it." also_parallel -- "$base" --set "Point history/Positions=1, 1; 1e9, 1"
-expect point_history_empty_region "Point history: the region from \\(15, 7\\) to \\(16, 8\\) holds no material point at the start." also_parallel -- "$base" --set "Point history/Region lower corner=15, 7" --set "Point history/Region upper corner=16, 8"
+expect point_history_off_grid "'Point history/Positions': \\(1e\\+09 1\\) lies outside the grid \\[0 0\\] - \\[16 8\\]." also_parallel -- "$base" --set "Point history/Positions=1, 1; 1e9, 1"
+expect point_history_empty_region "'Point history/Region lower corner' and 'Region upper corner': the box \\[15 7\\] - \\[16 8\\] holds no material point at the start." also_parallel -- "$base" --set "Point history/Region lower corner=15, 7" --set "Point history/Region upper corner=16, 8"
 expect local_damping_implicit "Inertia: 'Local damping' needs an explicit integrator" - -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Local damping=0.5"
 expect initial_velocity_not_finite "Parameter 'Inertia/Initial velocity' = 'sqrt\\(-1 - x\\); 0' gives a velocity that is not finite \\(-?nan\\) at the point initially at \\(" also_parallel -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Initial velocity=sqrt(-1 - x); 0"
 expect apic_with_flip "Inertia: 'FLIP fraction' = 0.9 blends FLIP with PIC; with 'Velocity update' = 'APIC'" - -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Velocity update=APIC" --set "Inertia/FLIP fraction=0.9"

@@ -1,6 +1,6 @@
 // The true boundary of a body in pieces, for the loads on it (Traction):
 // lattice cuts of boxes, discs and polygons in 2D, Archimedes' zones of a
-// sphere and the rings and strips of a cylinder in 3D.
+// sphere and the lattice cells and strips of a cylinder in 3D.
 
 #include <impm/core/body.h>
 
@@ -321,19 +321,15 @@ namespace impm
 
   template <int dim>
   void
-  Body<dim>::add_cylinder_pieces(const unsigned int          axis,
-                                 const double                sign,
-                                 const Point<dim>           &origin,
-                                 const Tensor<1, dim>       &spacing,
-                                 std::vector<BoundaryPiece> &pieces) const
+  Body<dim>::add_cylinder_pieces(
+    [[maybe_unused]] const unsigned int          axis,
+    [[maybe_unused]] const double                sign,
+    [[maybe_unused]] const Point<dim>           &origin,
+    [[maybe_unused]] const Tensor<1, dim>       &spacing,
+    [[maybe_unused]] std::vector<BoundaryPiece> &pieces) const
   {
     if constexpr (dim == 3)
       {
-        const double finest     = std::min(spacing[0], spacing[1]);
-        const auto   n_quarters = [&](const double arc) {
-          return std::max(
-            1u, static_cast<unsigned int>(std::ceil(arc / finest / 4. - 1e-9)));
-        };
         if (axis == 2)
           {
             // The flat end, cut at the lattice lines in x and y: each
@@ -369,8 +365,12 @@ namespace impm
         // The half of the side facing sign along x or y, from the angle
         // where it starts: an even number of sectors puts the plane
         // through the axis across the half between two of them.
-        const unsigned int n_sectors = 2 * n_quarters(2. * M_PI * radius);
-        const double       dphi      = M_PI / n_sectors;
+        const double       finest = std::min(spacing[0], spacing[1]);
+        const unsigned int n_sectors =
+          2 * std::max(1u,
+                       static_cast<unsigned int>(
+                         std::ceil(M_PI * radius / finest / 2. - 1e-9)));
+        const double dphi  = M_PI / n_sectors;
         const double start = axis == 0 ? (sign > 0 ? -0.5 * M_PI : 0.5 * M_PI) :
                                          (sign > 0 ? 0. : M_PI);
         for (const auto &[a, b] :
@@ -387,14 +387,6 @@ namespace impm
               x[2] = 0.5 * (a + b);
               pieces.push_back({x, radius * dphi * (b - a), normal});
             }
-      }
-    else
-      {
-        (void)axis;
-        (void)sign;
-        (void)origin;
-        (void)spacing;
-        (void)pieces;
       }
   }
 

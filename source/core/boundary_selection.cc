@@ -178,13 +178,6 @@ namespace impm
             lattice_face[a] *= spacing[d];
       }
 
-    const auto in_region = [&](const Point<dim> &x) {
-      bool inside = true;
-      if (has_region)
-        for (unsigned int d = 0; d < dim; ++d)
-          inside = inside && x[d] >= region_lower[d] && x[d] <= region_upper[d];
-      return inside;
-    };
     // The boundary points (in the region): those whose lattice
     // neighbour across a loaded face is outside the body or the grid,
     // with those faces (a bit per face).
@@ -248,7 +241,47 @@ namespace impm
             point_areas[point.first][f] +=
               lattice_face[Names::face_axis(f)] *
               grid.ring_length(lattice_face_centre(point.second, f, spacing));
-    for (auto piece : pieces)
+    std::vector<std::pair<std::uint64_t, Point<dim>>> candidates;
+    for (const auto &[point, faces] : local)
+      candidates.push_back(point);
+    add_piece_areas(pieces, candidates, grid);
+    if (point_areas.empty())
+      throw InputError(section + ": no material point of Body " +
+                       std::to_string(body + 1) + " lies on its " +
+                       (by_region ?
+                          std::string("boundary") :
+                          std::string(Names::face(boundary)) + " boundary") +
+                       (has_region ? " inside the region" : "") + ".");
+    area_sum = 0.;
+    for (const auto &entry : point_areas)
+      for (const double area : entry.second)
+        area_sum += area;
+    selected = true;
+  }
+
+
+
+  template <int dim>
+  bool
+  BoundarySelection<dim>::in_region(const Point<dim> &x) const
+  {
+    bool inside = true;
+    if (has_region)
+      for (unsigned int d = 0; d < dim; ++d)
+        inside = inside && x[d] >= region_lower[d] && x[d] <= region_upper[d];
+    return inside;
+  }
+
+
+
+  template <int dim>
+  void
+  BoundarySelection<dim>::add_piece_areas(
+    std::vector<typename Body<dim>::BoundaryPiece>           pieces,
+    const std::vector<std::pair<std::uint64_t, Point<dim>>> &candidates,
+    const CartesianGrid<dim>                                &grid)
+  {
+    for (auto &piece : pieces)
       {
         // A body may cross a symmetry plane (a roller face): its part
         // beyond the grid has no points and carries no load. The pieces
@@ -278,11 +311,13 @@ namespace impm
             }
         if (!clipped && !in_region(piece.midpoint))
           continue;
-        const auto nearest = std::min_element(
-          local.begin(), local.end(), [&](const auto &a, const auto &b) {
-            return a.first.second.distance_square(piece.midpoint) <
-                   b.first.second.distance_square(piece.midpoint);
-          });
+        const auto nearest =
+          std::min_element(candidates.begin(),
+                           candidates.end(),
+                           [&](const auto &a, const auto &b) {
+                             return a.second.distance_square(piece.midpoint) <
+                                    b.second.distance_square(piece.midpoint);
+                           });
         unsigned int axis = 0;
         for (unsigned int d = 1; d < dim; ++d)
           if (std::abs(piece.normal[d]) > std::abs(piece.normal[axis]))
@@ -291,21 +326,9 @@ namespace impm
           by_region ? 2 * axis + (piece.normal[axis] > 0. ? 1 : 0) : boundary;
         // In axisymmetry the ring the piece sweeps (exact for a straight
         // piece: 2 pi times its midpoint's radius times its length).
-        point_areas[nearest->first.first][face] +=
+        point_areas[nearest->first][face] +=
           piece.size * grid.ring_length(piece.midpoint);
       }
-    if (point_areas.empty())
-      throw InputError(section + ": no material point of Body " +
-                       std::to_string(body + 1) + " lies on its " +
-                       (by_region ?
-                          std::string("boundary") :
-                          std::string(Names::face(boundary)) + " boundary") +
-                       (has_region ? " inside the region" : "") + ".");
-    area_sum = 0.;
-    for (const auto &entry : point_areas)
-      for (const double area : entry.second)
-        area_sum += area;
-    selected = true;
   }
 
 

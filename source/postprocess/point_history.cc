@@ -20,24 +20,15 @@ namespace impm
 {
   namespace
   {
-    /** @brief Coordinates for a message: "1, 2.5". */
-    std::string
-    coordinates_text(const std::vector<double> &coordinates)
-    {
-      std::string text;
-      for (const double x : coordinates)
-        text += (text.empty() ? "" : ", ") + number_text(x);
-      return text;
-    }
-
-
-
-    /** @brief The coordinates of @p point. */
+    /** @brief @p coordinates as a point, for messages. */
     template <int dim>
-    std::vector<double>
-    corner(const Point<dim> &point)
+    Point<dim>
+    as_point(const std::vector<double> &coordinates)
     {
-      return std::vector<double>(point.begin_raw(), point.end_raw());
+      Point<dim> point;
+      for (unsigned int d = 0; d < dim; ++d)
+        point[d] = coordinates[d];
+      return point;
     }
 
 
@@ -83,21 +74,19 @@ namespace impm
                              "below 'Region upper corner' in every "
                              "coordinate.");
         // A position off the grid is a slip (a point is always on it): its
-        // nearest point would be some corner of a body, followed silently.
+        // nearest point would be some corner of a body, followed silently
+        // (as a point load's position, 'Point load/Positions').
         const auto &grid = context.parameters.grid;
-        for (unsigned int k = 0; k < positions.size(); ++k)
+        for (const auto &position : positions)
           for (unsigned int d = 0; d < dim; ++d)
-            if (positions[k][d] < grid.lower_corner[d] ||
-                positions[k][d] > grid.upper_corner[d])
+            if (position[d] < grid.lower_corner[d] ||
+                position[d] > grid.upper_corner[d])
               {
                 std::ostringstream message;
-                message << "Point history: position " << k + 1 << " ("
-                        << coordinates_text(positions[k])
-                        << ") lies outside the grid, from ("
-                        << coordinates_text(corner(grid.lower_corner))
-                        << ") to ("
-                        << coordinates_text(corner(grid.upper_corner))
-                        << "): no point can be near it.";
+                message << "'Point history/Positions': ("
+                        << as_point<dim>(position)
+                        << ") lies outside the grid [" << grid.lower_corner
+                        << "] - [" << grid.upper_corner << "].";
                 throw InputError(message.str());
               }
       }
@@ -237,10 +226,11 @@ namespace impm
         if (in_region.empty())
           {
             std::ostringstream message;
-            message << "Point history: the region from ("
-                    << coordinates_text(region_lower[0]) << ") to ("
-                    << coordinates_text(region_upper[0])
-                    << ") holds no material point at the start.";
+            message << "'Point history/Region lower corner' and 'Region "
+                       "upper corner': the box ["
+                    << as_point<dim>(region_lower[0]) << "] - ["
+                    << as_point<dim>(region_upper[0])
+                    << "] holds no material point at the start.";
             throw InputError(message.str());
           }
         std::sort(in_region.begin(), in_region.end());

@@ -135,6 +135,24 @@ namespace impm
     /** Throws if select() has not been called. */
     void
     point_areas_are_selected() const;
+
+    /** Whether @p x lies in the region (true without one). */
+    bool
+    in_region(const Point<dim> &x) const;
+
+    /**
+     * Give each of the body's boundary @p pieces that lies in the grid (a
+     * body may cross a symmetry plane) and in the region to the nearest
+     * of the boundary points @p candidates (id and initial position, by
+     * id), on the face of its domain that the piece faces (the side's, or
+     * with Boundary = region the one its normal points through most), in
+     * axisymmetry as the ring it sweeps.
+     */
+    void
+    add_piece_areas(
+      std::vector<typename Body<dim>::BoundaryPiece>           pieces,
+      const std::vector<std::pair<std::uint64_t, Point<dim>>> &candidates,
+      const CartesianGrid<dim>                                &grid);
   };
 } // namespace impm
 
