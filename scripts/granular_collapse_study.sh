@@ -9,10 +9,15 @@
 # run-out (L_inf - L0)/L0 from the outermost point, Lube's value, the
 # difference, the kinetic energy left at the end against its peak, and the
 # wall time.
-# Usage: scripts/granular_collapse_study.sh [IMPM] [FLIP FRACTIONS or APIC...]
+# Arguments after '--' are passed to every run (e.g. --set "Body
+# 1/Material/Mohr-Coulomb/Friction angle=35").
+# Usage: scripts/granular_collapse_study.sh [IMPM] [FLIP FRACTIONS or APIC...] [-- IMPM ARGUMENTS]
 impm=${1:-build/impm}
 shift
-fractions=("$@")
+fractions=()
+while [ $# -gt 0 ] && [ "$1" != -- ]; do fractions+=("$1"); shift; done
+[ "$1" = -- ] && shift
+extra=("$@")
 [ ${#fractions[@]} -eq 0 ] && fractions=(0.95 0.8)
 impm=$(cd "$(dirname "$impm")" && pwd)/$(basename "$impm")
 scene=$(cd "$(dirname "$0")/.." && pwd)/prm/granular_column_collapse.prm
@@ -35,7 +40,7 @@ print(X, Y, round(X / h), round(Y / h), T, int(round(T / 0.005)))")"
     "$impm" "$scene" --set "Output directory=$out" --set "Grid/Upper corner=$X, $Y" \
       --set "Grid/Number of cells=$NX, $NY" --set "Body 1/Upper corner=1, $a" \
       --set "Time/End time=$T" --set "Solver/Load steps=$N" --set "Output/Interval=$N" \
-      "${update[@]}" > $out.txt 2>&1 || { echo "a = $a, FLIP $flip: failed"; tail -2 $out.txt; continue; }
+      "${update[@]}" "${extra[@]}" > $out.txt 2>&1 || { echo "a = $a, FLIP $flip: failed"; tail -2 $out.txt; continue; }
     end=$(date +%s.%N)
     /usr/bin/python3 - "$out" "$a" "$flip" "$start" "$end" <<'PY'
 import csv, glob, sys

@@ -183,6 +183,8 @@ plus polygon.prm "subsection Body 1\n set Shape = polygon\n set Vertices = 0, 0;
 plus vertex_word.prm "subsection Body 1\n set Shape = polygon\n set Vertices = 0, 0; 4, x; 0, 4\nend"
 expect polygon_vertex_not_a_number "Parameter 'Body 1/Vertices' = '0, 0; 4, x; 0, 4' is not allowed: 'x' is not a finite number" - -- "$work/vertex_word.prm"
 expect self_intersecting_polygon "Parameter 'Body 1/Vertices' = '0, 0; 4, 4; 4, 0; 0, 4' is not allowed: the polygon's edges 1 and 3 cross" - -- "$work/polygon.prm"
+plus repeated_vertex.prm "subsection Body 1\n set Shape = polygon\n set Vertices = 0, 0; 3, 0; 3, 0; 0, 1\nend"
+expect polygon_repeated_vertex "Parameter 'Body 1/Vertices' = '0, 0; 3, 0; 3, 0; 0, 1' is not allowed: vertices 2 and 3 coincide." - -- "$work/repeated_vertex.prm"
 plus two_vertices.prm "subsection Body 1\n set Shape = polygon\n set Vertices = 0, 0; 4, 4\nend"
 expect polygon_two_vertices "a polygon needs at least three vertices" - -- "$work/two_vertices.prm"
 { cat "$(dirname "$base")/column_3d_gimp_plastic_8.prm"; printf 'subsection Body 1\n set Shape = disc\nend\n'; } > "$work/disc_3d.prm"

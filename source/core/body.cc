@@ -274,20 +274,21 @@ namespace impm
   Body<dim>::check_polygon(const std::string &value) const
   {
     const unsigned int n = vertices.size();
+    // Coincident neighbours first: their edge of no length would otherwise
+    // be reported as crossing the edges next to it.
+    for (unsigned int i = 0; i < n; ++i)
+      if (vertices[i].distance(vertices[(i + 1) % n]) == 0.)
+        Parameters::bad_value(
+          name + "/Vertices",
+          value,
+          "vertices " + std::to_string(std::min(i, (i + 1) % n) + 1) + " and " +
+            std::to_string(std::max(i, (i + 1) % n) + 1) + " coincide.");
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = i + 1; j < n; ++j)
         {
           // Edges i and j are neighbours if they share a vertex.
           if (j == i + 1 || (i == 0 && j == n - 1))
-            {
-              if (vertices[i].distance(vertices[j]) == 0.)
-                Parameters::bad_value(name + "/Vertices",
-                                      value,
-                                      "vertices " + std::to_string(i + 1) +
-                                        " and " + std::to_string(j + 1) +
-                                        " coincide.");
-              continue;
-            }
+            continue;
           if (segments_meet(vertices[i],
                             vertices[(i + 1) % n],
                             vertices[j],
