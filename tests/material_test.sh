@@ -10,6 +10,8 @@
 #                                sqrt(3/2) rho_y
 #   Mohr-Coulomb drained         peak q = 2 sin(phi)/(1 - sin(phi)) sigma_3
 #   triaxial (and extension)     + 2 c cos(phi)/(1 - sin(phi)) (Kirchhoff)
+#   Mohr-Coulomb simple shear    steady tau = sigma_n sin(phi) + c cos(phi)
+#                                on the horizontal plane (psi = 0)
 #   Hencky oedometer, cyclic     linear in the logarithmic strain
 # Usage: material_test.sh IMPM TESTS_DIRECTORY
 tests=$2
@@ -30,6 +32,10 @@ run "$tests/material_test_mohr_coulomb_triaxial.prm" \
   --set "Material test/Path=drained triaxial extension" \
   --set "Material test/File=mohr_coulomb_extension.csv"
 check mohr_coulomb_extension mohr_coulomb_extension.csv
+run "$tests/material_test_mohr_coulomb_triaxial.prm" \
+  --set "Material test/Path=simple shear" --set "Material test/Strain=1" \
+  --set "Material test/File=mohr_coulomb_shear.csv"
+check mohr_coulomb_shear mohr_coulomb_shear.csv
 run "$tests/material_test_hencky_oedometer.prm"
 check hencky_oedometer hencky_oedometer.csv
 run "$tests/material_test_hencky_oedometer.prm" \
