@@ -11,7 +11,9 @@
 # wall time.
 # Arguments after '--' are passed to every run (e.g. --set "Body
 # 1/Material/Mohr-Coulomb/Friction angle=35").
-# Usage: scripts/granular_collapse_study.sh [IMPM] [FLIP FRACTIONS or APIC...] [-- IMPM ARGUMENTS]
+# REFINEMENT=2 in the environment halves the cell and the time step (h =
+# L0/40, 0.0025 s).
+# Usage: [REFINEMENT=R] scripts/granular_collapse_study.sh [IMPM] [FLIP FRACTIONS or APIC...] [-- IMPM ARGUMENTS]
 impm=${1:-build/impm}
 shift
 fractions=()
@@ -28,9 +30,10 @@ printf '%-5s %-6s %-10s %-8s %-8s %-12s %s\n' a FLIP "run-out" Lube diff "Ek end
 for a in 0.5 1 1.5 4 7; do
   read -r X Y NX NY T N <<< "$(/usr/bin/python3 -c "
 a = $a; ref = 1.2 * a if a < 1.8 else 1.9 * a ** (2 / 3)
-X = round(1 + 1.6 * ref + 0.5, 1); Y = round(a + 0.25, 2); h = 0.05
+r = ${REFINEMENT:-1}
+X = round(1 + 1.6 * ref + 0.5, 1); Y = round(a + 0.25, 2); h = 0.05 / r
 T = round(1.5 * max(1, a) ** 0.5, 2)
-print(X, Y, round(X / h), round(Y / h), T, int(round(T / 0.005)))")"
+print(X, Y, round(X / h), round(Y / h), T, int(round(T * r / 0.005)))")"
   for flip in "${fractions[@]}"; do
     out=a${a}_flip$flip
     # APIC: the affine transfer (FLIP fraction 1) in place of a fraction.
