@@ -277,12 +277,13 @@ namespace impm
     // Coincident neighbours first: their edge of no length would otherwise
     // be reported as crossing the edges next to it.
     for (unsigned int i = 0; i < n; ++i)
-      if (vertices[i].distance(vertices[(i + 1) % n]) == 0.)
+      if (const unsigned int next = (i + 1) % n;
+          vertices[i].distance(vertices[next]) == 0.)
         Parameters::bad_value(
           name + "/Vertices",
           value,
-          "vertices " + std::to_string(std::min(i, (i + 1) % n) + 1) + " and " +
-            std::to_string(std::max(i, (i + 1) % n) + 1) + " coincide.");
+          "vertices " + std::to_string(std::min(i, next) + 1) + " and " +
+            std::to_string(std::max(i, next) + 1) + " coincide.");
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = i + 1; j < n; ++j)
         {
