@@ -12,7 +12,8 @@
 # Arguments after '--' are passed to every run (e.g. --set "Body
 # 1/Material/Mohr-Coulomb/Friction angle=35").
 # REFINEMENT=2 in the environment halves the cell and the time step (h =
-# L0/40, 0.0025 s).
+# L0/40, 0.0025 s). RATIOS="4 7" in the environment runs only those
+# aspect ratios.
 # Usage: [REFINEMENT=R] scripts/granular_collapse_study.sh [IMPM] [FLIP FRACTIONS or APIC...] [-- IMPM ARGUMENTS]
 impm=${1:-build/impm}
 shift
@@ -27,7 +28,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 printf '%-5s %-6s %-10s %-8s %-8s %-12s %s\n' a FLIP "run-out" Lube diff "Ek end/peak" "wall time"
-for a in 0.5 1 1.5 4 7; do
+for a in ${RATIOS:-0.5 1 1.5 4 7}; do
   read -r X Y NX NY T N <<< "$(/usr/bin/python3 -c "
 a = $a; ref = 1.2 * a if a < 1.8 else 1.9 * a ** (2 / 3)
 r = ${REFINEMENT:-1}

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace impm
 {
@@ -82,7 +83,8 @@ namespace impm
                           Patterns::Selection("zero|geostatic"),
                           "The stress the body starts from: zero, or "
                           "geostatic (vertical stress from the weight of the "
-                          "body above a point, horizontal stress K0 times "
+                          "material above a point, see Surface level; "
+                          "horizontal stress K0 times "
                           "that; needs gravity along the last axis, acting "
                           "from the first load step: Gravity/Ramped = "
                           "false).");
@@ -95,8 +97,17 @@ namespace impm
         prm.declare_entry("Surface level",
                           "",
                           Patterns::Anything(),
-                          "Geostatic start: elevation (last coordinate) of "
-                          "the free surface; empty: the top of the body.");
+                          "Geostatic start: empty, the vertical stress at a "
+                          "point is the weight of the material above it (of "
+                          "every body, each with its density), so that "
+                          "layers, slopes and a body on another start from "
+                          "what they carry; or the elevation (last "
+                          "coordinate) of a horizontal free surface, and the "
+                          "vertical stress is this body's density times g "
+                          "times the depth below it (a surface above the "
+                          "body's top stands for an overburden the scene "
+                          "does not model: load the top with a traction "
+                          "equal to its weight).");
         prm.enter_subsection("Material");
         MaterialRegistry::declare_parameters(prm);
         prm.leave_subsection();
@@ -184,14 +195,13 @@ namespace impm
     name = "Body " + std::to_string(number);
     prm.enter_subsection(name);
     parse_shape(prm);
-    points_per_direction     = prm.get_integer("Points per cell direction");
-    density                  = prm.get_double("Density");
-    initial_stress.geostatic = prm.get("Initial stress") == "geostatic";
-    initial_stress.k0        = prm.get_double("K0");
-    const std::string level  = Utilities::trim(prm.get("Surface level"));
-    if (level.empty())
-      initial_stress.surface_level = bounding_box().second[dim - 1];
-    else
+    points_per_direction         = prm.get_integer("Points per cell direction");
+    density                      = prm.get_double("Density");
+    initial_stress.geostatic     = prm.get("Initial stress") == "geostatic";
+    initial_stress.k0            = prm.get_double("K0");
+    const std::string level      = Utilities::trim(prm.get("Surface level"));
+    initial_stress.surface_named = !level.empty();
+    if (initial_stress.surface_named)
       try
         {
           std::size_t end              = 0;
@@ -216,12 +226,69 @@ namespace impm
 
 
   template <int dim>
-  SymmetricTensor<2, 3>
-  Body<dim>::geostatic_stress(const Point<dim> &x, const double g) const
+  double
+  Body<dim>::height_inside_above(const Point<dim> &x) const
   {
-    const double depth =
-      std::max(initial_stress.surface_level - x[dim - 1], 0.);
-    const double          vertical = -density * g * depth;
+    const unsigned int up = dim - 1;
+    // The line's piece [bottom, top] inside a convex shape, or none.
+    const auto above = [&x, up](const double bottom, const double top) {
+      return std::max(top - std::max(bottom, x[up]), 0.);
+    };
+    if (shape == Shape::box)
+      {
+        for (unsigned int d = 0; d < up; ++d)
+          if (!(x[d] >= lower_corner[d] && x[d] <= upper_corner[d]))
+            return 0.;
+        return above(lower_corner[up], upper_corner[up]);
+      }
+    double off_axis_squared = 0.;
+    for (unsigned int d = 0; d < up; ++d)
+      off_axis_squared += (x[d] - center[d]) * (x[d] - center[d]);
+    if (shape == Shape::disc || shape == Shape::sphere)
+      {
+        if (off_axis_squared >= radius * radius)
+          return 0.;
+        const double half = std::sqrt(radius * radius - off_axis_squared);
+        return above(center[up] - half, center[up] + half);
+      }
+    if (shape == Shape::cylinder)
+      return off_axis_squared < radius * radius ?
+               above(center[up], center[up] + height) :
+               0.;
+    // Polygon: the heights where the vertical line crosses the edges (each
+    // edge half-open in x, as in contains()), paired bottom to top.
+    std::vector<double> crossings;
+    for (unsigned int i = 0, j = vertices.size() - 1; i < vertices.size();
+         j = i++)
+      {
+        const Point<dim> &a = vertices[i], &b = vertices[j];
+        if ((a[0] > x[0]) != (b[0] > x[0]))
+          crossings.push_back(a[1] +
+                              (b[1] - a[1]) * (x[0] - a[0]) / (b[0] - a[0]));
+      }
+    std::sort(crossings.begin(), crossings.end());
+    double height = 0.;
+    for (unsigned int k = 0; k + 1 < crossings.size(); k += 2)
+      height += above(crossings[k], crossings[k + 1]);
+    return height;
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  Body<dim>::geostatic_stress(const Point<dim>             &x,
+                              const double                  g,
+                              const std::vector<Body<dim>> &bodies) const
+  {
+    double overburden = 0.;
+    if (initial_stress.surface_named)
+      overburden =
+        density * std::max(initial_stress.surface_level - x[dim - 1], 0.);
+    else
+      for (const Body<dim> &body : bodies)
+        overburden += body.density * body.height_inside_above(x);
+    const double          vertical = -g * overburden;
     SymmetricTensor<2, 3> stress;
     for (unsigned int d = 0; d < 3; ++d)
       stress[d][d] = initial_stress.k0 * vertical;
@@ -438,8 +505,13 @@ namespace impm
         << " points per cell, density " << density << ", "
         << material->description();
     if (initial_stress.geostatic)
-      out << ", geostatic start: K0 = " << initial_stress.k0 << ", surface at "
-          << initial_stress.surface_level << " m";
+      {
+        out << ", geostatic start: K0 = " << initial_stress.k0;
+        if (initial_stress.surface_named)
+          out << ", surface at " << initial_stress.surface_level << " m";
+        else
+          out << ", under the bodies above";
+      }
     return out.str();
   }
 

@@ -31,8 +31,9 @@ namespace impm
                                       body.material->n_state_entries());
     if (body.initial_stress.geostatic)
       {
-        const SymmetricTensor<2, 3> stress = body.geostatic_stress(position, g);
-        SymmetricTensor<2, 3>       elastic_strain;
+        const SymmetricTensor<2, 3> stress =
+          body.geostatic_stress(position, g, bodies);
+        SymmetricTensor<2, 3> elastic_strain;
         try
           {
             elastic_strain = body.material->elastic_strain_for_stress(stress);
@@ -65,9 +66,9 @@ namespace impm
             std::ostringstream message;
             message << body.name << ": the geostatic stress with K0 = "
                     << body.initial_stress.k0 << " lies outside the "
-                    << "yield surface of its material at (" << position << "), "
-                    << body.initial_stress.surface_level - position[dim - 1]
-                    << " m deep (" << body.material->description()
+                    << "yield surface of its material at (" << position
+                    << "), vertical stress " << stress[dim - 1][dim - 1]
+                    << " Pa (" << body.material->description()
                     << "); choose a K0 nearer 1 or a stronger "
                        "material.";
             outside_yield_surface = message.str();

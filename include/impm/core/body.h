@@ -188,20 +188,39 @@ namespace impm
       bool geostatic = false;
       /** Ratio K0 of horizontal to vertical stress. */
       double k0 = 0.5;
-      /** Elevation of the free surface along the last axis. */
+      /** Whether the scene names a horizontal free surface ("Surface
+       *  level"); if not, a point's overburden is the material above it. */
+      bool surface_named = false;
+      /** The named surface's elevation along the last axis. */
       double surface_level = 0.;
     };
     /** The initial stress. */
     InitialStress initial_stress;
 
     /**
+     * @brief The length of the vertical line (along the last axis) above
+     * @p x that lies inside the body's shape: for a point inside a box, the
+     * height of the box above it; for a polygon, the sum of the line's
+     * pieces inside it above @p x (even-odd rule, as contains()).
+     */
+    double
+    height_inside_above(const Point<dim> &x) const;
+
+    /**
      * @brief The geostatic Kirchhoff stress at @p x under the acceleration
-     * of gravity @p g (along the last axis): vertical @f$-\rho_0 g d@f$ at
-     * the depth d below the surface level (zero above it), horizontal
-     * (and, in plane strain, out of plane) K0 times that.
+     * of gravity @p g (along the last axis): vertical @f$-g\,w@f$ with the
+     * overburden w (mass per unit area above @p x), horizontal (and, in
+     * plane strain, out of plane) K0 times that. Without a named surface,
+     * w is the sum over @p bodies (this one among them) of each body's
+     * density times height_inside_above(): layers, slopes and a body
+     * resting on another start from the weight they carry. With a named
+     * surface, w is this body's density times the depth below it (zero
+     * above it).
      */
     SymmetricTensor<2, 3>
-    geostatic_stress(const Point<dim> &x, const double g) const;
+    geostatic_stress(const Point<dim>             &x,
+                     const double                  g,
+                     const std::vector<Body<dim>> &bodies) const;
 
   private:
     /** @brief An edge of a polygon: start, tangent (to the next vertex),
