@@ -14,7 +14,10 @@
 //   a failed solve whose last 5 residuals are flat below 1e-3 (a floor,
 //   the axisymmetric plate's 1.5e-9) suggests 'Solver/Absolute
 //   tolerance' in its message; one that cycles (0.063 and 0.11, a
-//   contact's stick and slip) or still falls does not.
+//   contact's stick and slip) or still falls does not; flat residuals at
+//   2e-4 of the internal forces (2 N of 1e4 N) are no round-off: the
+//   message names Newton's cycling and 'Solver/Line search' (with the line
+//   search on, a smaller increment).
 
 #include <impm/base/errors.h>
 #include <impm/solver/load_step_control.h>
@@ -107,15 +110,27 @@ main()
     record.residuals                = cases[0];
     record.last_norm                = 3.6e-5;
     record.last_internal_force_norm = 1e4;
-    try
-      {
-        control.update(record);
-      }
-    catch (const LoadStepFailure &failure)
-      {
-        const std::string text = failure.what();
-        std::cout << text.substr(0, text.find(" Relative residuals"))
-                  << std::endl;
-      }
+    const auto report               = [&record](LoadStepControl &control) {
+      try
+        {
+          control.update(record);
+        }
+      catch (const LoadStepFailure &failure)
+        {
+          const std::string text = failure.what();
+          std::cout << text.substr(0, text.find(" Relative residuals"))
+                    << std::endl;
+        }
+    };
+    report(control);
+    // The same flat residuals at 2e-4 of the internal forces: a cycle
+    // between return regions, not round-off; the line search named, or,
+    // with it on, a smaller increment.
+    record.residuals = {0.7, 0.03, 2e-4, 2.1e-4, 1.9e-4, 2e-4, 2.05e-4, 2e-4};
+    record.last_norm = 2.;
+    report(control);
+    parameters.line_search = true;
+    LoadStepControl searching(parameters);
+    report(searching);
   }
 }

@@ -77,7 +77,9 @@ namespace impm
   RunStatistics<dim>::add(const StepRecord &record)
   {
     total_newton_iterations += record.newton.n_iterations();
-    residual_evaluations += record.newton.residuals.size();
+    residual_evaluations +=
+      record.newton.residuals.size() + record.newton.line_search_evaluations;
+    line_search_evaluations += record.newton.line_search_evaluations;
     system_dofs_last_step = record.system_dofs;
     for (const LinearSolveReport &solve : record.newton.linear_solves)
       worst_condition = std::max(worst_condition, solve.condition_estimate);
@@ -113,6 +115,8 @@ namespace impm
               static_cast<double>(total_newton_iterations));
     state.set("statistics.residual evaluations",
               static_cast<double>(residual_evaluations));
+    state.set("statistics.line search evaluations",
+              static_cast<double>(line_search_evaluations));
     state.set("statistics.system dofs",
               static_cast<double>(system_dofs_last_step));
     state.set("statistics.largest point increment", largest_point_increment);
@@ -145,6 +149,7 @@ namespace impm
     n_cuts                  = count("statistics.cuts");
     total_newton_iterations = count("statistics.newton iterations");
     residual_evaluations    = count("statistics.residual evaluations");
+    line_search_evaluations = count("statistics.line search evaluations");
     system_dofs_last_step   = static_cast<types::global_dof_index>(
       state.get_double("statistics.system dofs"));
     largest_point_increment =

@@ -81,7 +81,8 @@ namespace impm
         json["formulation"] =
           Parameters::formulation_names[static_cast<unsigned int>(
             context.solver.formulation)];
-        json["residual_evaluations"] = statistics.residual_evaluations;
+        json["residual_evaluations"]    = statistics.residual_evaluations;
+        json["line_search_evaluations"] = statistics.line_search_evaluations;
         json["microseconds_per_point_evaluation"] =
           1e6 * (phase_time("stress update") + phase_time("assembly")) /
           (double(n_points) * statistics.residual_evaluations);

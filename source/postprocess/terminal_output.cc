@@ -227,11 +227,15 @@ namespace impm
                   << "': " << statistics.n_converged_steps << " load steps ("
                   << statistics.n_cuts
                   << (statistics.n_cuts == 1 ? " cut), " : " cuts), ")
-                  << statistics.total_newton_iterations
-                  << " Newton iterations, wall time "
-                  << format_duration(statistics.wall_time) << "; files in "
-                  << context.parameters.scene.output_directory << "/"
-                  << std::endl;
+                  << statistics.total_newton_iterations << " Newton iterations"
+                  << (statistics.line_search_evaluations > 0 ?
+                        " (and " +
+                          std::to_string(statistics.line_search_evaluations) +
+                          " line-search residuals)" :
+                        std::string())
+                  << ", wall time " << format_duration(statistics.wall_time)
+                  << "; files in " << context.parameters.scene.output_directory
+                  << "/" << std::endl;
       }
 
       /** The summary's scales: L and S L^(dim-1) of the scene's Testing
@@ -446,7 +450,11 @@ namespace impm
                 << context.material_points.n_global_points()
                 << ", total Newton iterations: "
                 << statistics.total_newton_iterations
-                << ", load-step cuts: " << statistics.n_cuts << '\n';
+                << ", load-step cuts: " << statistics.n_cuts;
+      if (statistics.line_search_evaluations > 0)
+        std::cout << ", line-search residuals: "
+                  << statistics.line_search_evaluations;
+      std::cout << '\n';
       char buffer[160];
       std::snprintf(buffer,
                     sizeof(buffer),

@@ -134,14 +134,29 @@ namespace impm
               << " N): set 'Solver/Absolute tolerance' above it.";
     else if (record.outcome == NewtonOutcome::iteration_limit &&
              stalled(record.residuals))
-      message << " Its residual stalled at " << record.last_norm
-              << " N (relative " << record.residuals.back()
-              << ") over its last " << stall_length
-              << " iterations, a floor of round-off that iterating does not "
-                 "lower: if "
-              << record.last_norm
-              << " N is negligible against the scene's forces, set "
-                 "'Solver/Absolute tolerance' above it.";
+      {
+        message << " Its residual stalled at " << record.last_norm
+                << " N (relative " << record.residuals.back()
+                << ") over its last " << stall_length << " iterations";
+        // Far above the internal forces' round-off (a penalty's floor
+        // stays below 1e-6 of them): Newton cycles, it is not a floor.
+        if (!(record.last_norm < 1e-6 * record.last_internal_force_norm))
+          message << ", far above the round-off of the internal forces ("
+                  << record.last_internal_force_norm
+                  << " N): Newton cycles between iterates, as where points "
+                     "change their return region (a plastic flow, "
+                     "Mohr-Coulomb's corners, a tension cut-off); "
+                  << (parameters.line_search ?
+                        "a smaller increment may pass." :
+                        "'Solver/Line search = true' halves the corrections "
+                        "that do not lower the residual.");
+        else
+          message << ", a floor of round-off that iterating does not "
+                     "lower: if "
+                  << record.last_norm
+                  << " N is negligible against the scene's forces, set "
+                     "'Solver/Absolute tolerance' above it.";
+      }
     if (!parameters.step_control)
       throw LoadStepFailure(message.str() +
                               " Relative residuals:" + failures.str(),

@@ -346,6 +346,7 @@ namespace impm
   {
     if (couplings.n_global_unknowns() > 0)
       return solve_bordered(relative_tolerance, estimate_condition);
+    last_global_correction.reinit(0);
     TimerOutput::Scope      scope(timer, "linear solve");
     const LinearSolveReport report = linear_solver.solve({system.matrix,
                                                           system.solution,
@@ -355,6 +356,26 @@ namespace impm
     if (report.success)
       add_solution();
     return report;
+  }
+
+
+
+  template <int dim>
+  void
+  LoadStepProblem<dim>::move_along_last_correction(const double factor)
+  {
+    Assert(factor != 0., ExcInternalError());
+    // The last linear solve's solution is the correction: scaled, added
+    // and restored.
+    system.solution *= factor;
+    add_solution();
+    system.solution *= 1. / factor;
+    if (last_global_correction.size() > 0)
+      {
+        Vector<double> scaled(last_global_correction);
+        scaled *= factor;
+        couplings.add_to_global_unknowns(scaled);
+      }
   }
 
 
@@ -416,6 +437,7 @@ namespace impm
       system.solution.add(-correction(j), responses[j]);
     add_solution();
     couplings.add_to_global_unknowns(correction);
+    last_global_correction = correction;
     return report;
   }
 

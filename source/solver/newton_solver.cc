@@ -72,6 +72,64 @@ namespace impm
 
 
 
+  bool
+  NewtonSolver::meets_tolerance(
+    const NonlinearProblem::Residual &residual) const
+  {
+    return residual.relative < parameters.tolerance ||
+           residual.norm < parameters.absolute_tolerance ||
+           residual.norm <= residual.round_off;
+  }
+
+
+
+  NonlinearProblem::Residual
+  NewtonSolver::search_along_correction(NonlinearProblem &problem,
+                                        const NonlinearProblem::Residual &full,
+                                        NewtonRecord &record) const
+  {
+    const double previous = record.residuals.back();
+    const auto   usable   = [](const NonlinearProblem::Residual &residual) {
+      return residual.admissible && std::isfinite(residual.relative);
+    };
+    const auto enough = [&](const NonlinearProblem::Residual &residual,
+                            const double                      step) {
+      return usable(residual) &&
+             (meets_tolerance(residual) ||
+              residual.relative <= (1. - 1e-4 * step) * previous);
+    };
+    if (enough(full, 1.))
+      return full;
+    constexpr unsigned int     max_halvings = 5;
+    NonlinearProblem::Residual residual     = full;
+    double                     step = 1., best_step = 1.;
+    double                     best =
+      usable(full) ? full.relative : std::numeric_limits<double>::infinity();
+    for (unsigned int k = 0; k < max_halvings; ++k)
+      {
+        problem.move_along_last_correction(-step / 2.);
+        step /= 2.;
+        ++record.line_search_evaluations;
+        residual = problem.evaluate_residual();
+        if (enough(residual, step))
+          return residual;
+        if (usable(residual) && residual.relative < best)
+          {
+            best      = residual.relative;
+            best_step = step;
+          }
+      }
+    if (best_step != step)
+      {
+        problem.move_along_last_correction(best_step - step);
+        ++record.line_search_evaluations;
+        residual = problem.evaluate_residual();
+      }
+    return residual;
+  }
+
+
+
   NewtonRecord
   NewtonSolver::solve(NonlinearProblem &problem) const
   {
@@ -83,7 +141,9 @@ namespace impm
             record.outcome = NewtonOutcome::interrupted;
             return record;
           }
-        const NonlinearProblem::Residual residual = problem.evaluate_residual();
+        NonlinearProblem::Residual residual = problem.evaluate_residual();
+        if (parameters.line_search && iteration > 0)
+          residual = search_along_correction(problem, residual, record);
         if (!residual.admissible)
           {
             record.outcome = NewtonOutcome::inverted_point;
@@ -95,9 +155,7 @@ namespace impm
         record.last_internal_force_norm = residual.internal_force_norm;
         if (!std::isfinite(residual.relative))
           record.outcome = NewtonOutcome::not_finite;
-        else if (residual.relative < parameters.tolerance ||
-                 residual.norm < parameters.absolute_tolerance ||
-                 residual.norm <= residual.round_off)
+        else if (meets_tolerance(residual))
           record.outcome = NewtonOutcome::converged;
         else if (residual.relative >
                  parameters.divergence_factor * record.residuals.front())

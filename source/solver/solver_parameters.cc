@@ -94,6 +94,19 @@ namespace impm
           "points change return region: the footing at h = 0.0625 m took "
           "11,025 Newton iterations and 446 s with 0.1, 467 and 16 s with "
           "1e-2 (doc/benchmarks/parallel_and_solvers.md).");
+        prm.declare_entry(
+          "Line search",
+          "false",
+          Patterns::Bool(),
+          "Backtracking along each Newton correction: when the iterate it "
+          "reaches has an inverted point, a non-finite value, or a relative "
+          "residual that has not fallen by 1e-4 of the step (Armijo's "
+          "condition), the step is halved, up to 5 times (each one "
+          "residual evaluation, no matrix); if none is enough, the step "
+          "of the smallest residual is kept. For scenes whose Newton "
+          "iterations cycle where points change return region (a plastic "
+          "flow, the Mohr-Coulomb corners, a tension cut-off) instead of "
+          "converging; false: the full correction always.");
         prm.declare_entry("Linear iterations",
                           "1000",
                           Patterns::Integer(1),
@@ -248,6 +261,7 @@ namespace impm
       amg_coarse_size           = prm.get_integer("AMG coarse size");
       direct_rescue_size        = prm.get_integer("Direct rescue size");
       step_control              = prm.get_bool("Step control");
+      line_search               = prm.get_bool("Line search");
       minimum_step              = prm.get_double("Minimum load step");
       divergence_factor         = prm.get_double("Divergence factor");
       easy_iterations           = prm.get_integer("Easy step iterations");

@@ -172,6 +172,8 @@ namespace impm
     unsigned int total_newton_iterations = 0;
     /** Residual evaluations (stress updates). */
     unsigned int residual_evaluations = 0;
+    /** The line search's residual evaluations among them. */
+    unsigned int line_search_evaluations = 0;
     /** System DoFs of the last attempt. */
     types::global_dof_index system_dofs_last_step = 0;
     /** Largest point displacement of an accepted step, in cells. */

@@ -135,6 +135,9 @@ namespace impm
     solve_and_update(const double relative_tolerance,
                      const bool   estimate_condition) override;
 
+    void
+    move_along_last_correction(const double factor) override;
+
     /**
      * @brief The largest displacement of a point in the current increment,
      * in cells (the largest over directions of |u_d| / h_d), and of the
@@ -251,6 +254,9 @@ namespace impm
     Vector<double> global_residual;
     /** The bordered block at the last assemble_matrix(). */
     BorderedBlock border;
+    /** The global unknowns' part of the last correction (empty without
+     *  global unknowns). */
+    Vector<double> last_global_correction;
 
     /**
      * @brief The Newton correction of the bordered system of the DoFs and

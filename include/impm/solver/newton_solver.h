@@ -108,6 +108,14 @@ namespace impm
     virtual LinearSolveReport
     solve_and_update(const double relative_tolerance,
                      const bool   estimate_condition) = 0;
+
+    /**
+     * @brief Add @p factor times the last correction of solve_and_update()
+     * to the iterate (a line search's step back along it: a negative
+     * factor).
+     */
+    virtual void
+    move_along_last_correction(const double factor) = 0;
   };
 
   /** @brief What one Newton solve did. */
@@ -138,6 +146,10 @@ namespace impm
     /** Whether the step was explicit: no Newton solve, no residual (its
      *  outcome is that of the explicit update). */
     bool explicit_step = false;
+    /** The residual evaluations of the line search ('Solver/Line
+     *  search') beyond one per iterate: one per halving of a correction,
+     *  and one to return to the best step tried. */
+    unsigned int line_search_evaluations = 0;
 
     /** @brief The outcome's name, with the cause of a failed linear solve
      *  or the reason of a refused step. */
@@ -228,6 +240,25 @@ namespace impm
                      const bool   contact_changed = false) const;
 
   private:
+    /**
+     * @brief 'Solver/Line search': the iterate the last correction reached
+     * has the residual @p full; if it is inadmissible, not finite or has
+     * not fallen by the fraction 1e-4 of the step (Armijo's condition on
+     * the relative residual, against @p record's last accepted one), halve
+     * the step along the correction, up to 5 times, until one has; if none
+     * has, keep the step of the smallest admissible residual tried (the
+     * full one if none was admissible). Returns the kept iterate's
+     * residual; counts its residual evaluations in @p record.
+     */
+    NonlinearProblem::Residual
+    search_along_correction(NonlinearProblem                 &problem,
+                            const NonlinearProblem::Residual &full,
+                            NewtonRecord                     &record) const;
+
+    /** @brief Whether @p residual meets the tolerances (converged). */
+    bool
+    meets_tolerance(const NonlinearProblem::Residual &residual) const;
+
     const Parameters::Solver &parameters;
     /** set_interruption()'s check (empty: none). */
     std::function<bool()> interrupted;

@@ -48,6 +48,8 @@ namespace impm
       unsigned int direct_rescue_size;
       /** Cut failed load steps and grow easy ones (else a failure stops). */
       bool step_control;
+      /** Halve a Newton correction that does not lower the residual. */
+      bool line_search = false;
       /** Smallest load increment, as a fraction of the total load. */
       double minimum_step;
       /** A step has failed when the residual exceeds this times its first. */
