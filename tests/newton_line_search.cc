@@ -125,20 +125,16 @@ int
 main()
 {
   const auto always = [](double) { return true; };
+  const auto arctan = [&always](const double start) {
+    return ScalarProblem([](double x) { return std::atan(x); },
+                         [](double x) { return 1. / (1. + x * x); },
+                         always,
+                         start);
+  };
   for (const bool search : {false, true})
     {
-      solve("atan(x) from 1.5",
-            ScalarProblem([](double x) { return std::atan(x); },
-                          [](double x) { return 1. / (1. + x * x); },
-                          always,
-                          1.5),
-            search);
-      solve("atan(x) from 1.39174520382",
-            ScalarProblem([](double x) { return std::atan(x); },
-                          [](double x) { return 1. / (1. + x * x); },
-                          always,
-                          1.39174520382),
-            search);
+      solve("atan(x) from 1.5", arctan(1.5), search);
+      solve("atan(x) from 1.39174520382", arctan(1.39174520382), search);
       solve("1/x - 2 from 1.2",
             ScalarProblem([](double x) { return 1. / x - 2.; },
                           [](double x) { return -1. / (x * x); },

@@ -119,6 +119,10 @@ namespace impm
             best_step = step;
           }
       }
+    // None admissible: the step fails as the full one would (and is cut
+    // from the last converged state), no need to return to it.
+    if (!std::isfinite(best))
+      return residual;
     if (best_step != step)
       {
         problem.move_along_last_correction(best_step - step);

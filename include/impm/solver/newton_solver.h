@@ -246,9 +246,10 @@ namespace impm
      * not fallen by the fraction 1e-4 of the step (Armijo's condition on
      * the relative residual, against @p record's last accepted one), halve
      * the step along the correction, up to 5 times, until one has; if none
-     * has, keep the step of the smallest admissible residual tried (the
-     * full one if none was admissible). Returns the kept iterate's
-     * residual; counts its residual evaluations in @p record.
+     * has, keep the step of the smallest admissible residual tried (if
+     * none was admissible, the last tried: the solve fails as with the full
+     * step). Returns the kept iterate's residual; counts its residual
+     * evaluations in @p record.
      */
     NonlinearProblem::Residual
     search_along_correction(NonlinearProblem                 &problem,
