@@ -177,7 +177,7 @@ namespace impm
       }
     nodes.update_points(material_points,
                         steps,
-                        integrator.flip_fraction,
+                        integrator.flip_fraction_of_step(time_step),
                         velocity_change,
                         new_velocity,
                         acceleration,

@@ -82,8 +82,20 @@ namespace impm
     ExplicitOrder explicit_order;
     /** The explicit step's fraction of the stable one. */
     double courant_number;
-    /** The points' velocity update's FLIP fraction (1: FLIP, 0: PIC). */
+    /**
+     * @brief The FLIP fraction of a step of length @p time_step: 'FLIP
+     * fraction' phi, or with a 'FLIP reference step' T above 0,
+     * phi^(time_step / T), so that the PIC share's damping per second does
+     * not depend on the step.
+     */
+    double
+    flip_fraction_of_step(const double time_step) const;
+
+    /** The points' velocity update's FLIP fraction (1: FLIP, 0: PIC), per
+     *  step or per flip_reference_step. */
     double flip_fraction;
+    /** The time step flip_fraction is given for (s; 0: every step). */
+    double flip_reference_step;
     /** Whether the points carry the nodes' velocity gradient and give
      *  the nodes an affine velocity field (APIC; FLIP fraction 1). */
     bool affine_transfer;
