@@ -17,6 +17,15 @@ namespace impm
 
 
 
+  double
+  LoadStepControl::smallest_step() const
+  {
+    return nominal_step > parameters.minimum_step ? parameters.minimum_step :
+                                                    nominal_step / 1024.;
+  }
+
+
+
   std::string
   LoadStepControl::describe_attempt(const double progress,
                                     const double increment) const
@@ -168,17 +177,24 @@ namespace impm
     if (untried_steady_growth)
       n_steady_needed *= 2;
     untried_steady_growth = false;
-    if (step_size < parameters.minimum_step)
+    if (step_size < smallest_step())
       {
         std::ostringstream limit;
+        const bool below_nominal = smallest_step() < parameters.minimum_step;
         if (end_time > 0.)
-          limit << " The time step would fall below 'Solver/Minimum load "
-                   "step' times 'Time/End time' = "
-                << parameters.minimum_step * end_time << " s.";
+          limit << " The time step would fall below "
+                << (below_nominal ? "1/1024 of the nominal step (itself not "
+                                    "above 'Solver/Minimum load step' times "
+                                    "'Time/End time') = " :
+                                    "'Solver/Minimum load step' times "
+                                    "'Time/End time' = ")
+                << smallest_step() * end_time << " s.";
         else
-          limit << " The load increment would fall below 'Solver/Minimum "
-                   "load step' = "
-                << parameters.minimum_step << '.';
+          limit << " The load increment would fall below "
+                << (below_nominal ? "1/1024 of the nominal increment (itself "
+                                    "not above 'Solver/Minimum load step') = " :
+                                    "'Solver/Minimum load step' = ")
+                << smallest_step() << '.';
         throw LoadStepFailure(message.str() + limit.str() +
                                 " Attempts:" + failures.str(),
                               load_factor);

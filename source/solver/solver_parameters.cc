@@ -181,7 +181,11 @@ namespace impm
                           Patterns::Double(1e-12, 1.),
                           "Smallest load increment, as a fraction of the "
                           "total load (1e-12 to 1); a step that fails at this "
-                          "size stops the run with its residual history.");
+                          "size stops the run with its residual history. "
+                          "Where the nominal step 1/(Load steps) is not "
+                          "above it (an explicit run of many steps), the "
+                          "smallest is 1/1024 of the nominal step instead, "
+                          "so that a step can still be cut.");
         prm.declare_entry("Divergence factor",
                           "1e4",
                           Patterns::Double(1.),

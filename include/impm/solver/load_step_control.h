@@ -103,6 +103,13 @@ namespace impm
     std::string
     describe_attempt(double progress, double increment) const;
 
+    /** @brief The smallest increment a cut may reach: 'Solver/Minimum load
+     *  step', or where the nominal step is not above it (an explicit run of
+     *  more steps than its inverse), 1/1024 of the nominal step, so that a
+     *  step can still be cut (ten halvings). */
+    double
+    smallest_step() const;
+
     const Parameters::Solver &parameters;
     /** The scene's end time in s (0: none). */
     const double end_time;
