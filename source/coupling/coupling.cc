@@ -121,7 +121,9 @@ namespace impm
 
   template <int dim>
   std::string
-  Coupling<dim>::step_increment(const LoadStepSystem<dim> &, NodalVector &)
+  Coupling<dim>::step_increment(const LoadStepSystem<dim> &,
+                                NodalVector &,
+                                double &)
   {
     return "";
   }

@@ -284,11 +284,14 @@ namespace impm
 
       /** @brief The explicit step's increment (set_start_residual()
        *  found it), or why the step is cut: its time step above the
-       *  stable one at Courant number 1. */
+       *  stable one at Courant number 1; the largest time step the
+       *  Courant number allows from this start. */
       std::string
       step_increment(const LoadStepSystem<dim> &system,
-                     NodalVector               &increment) override
+                     NodalVector               &increment,
+                     double                    &largest_time_step) override
       {
+        largest_time_step = stable_step_size;
         const std::string refusal =
           explicit_step_refusal(time_step,
                                 stable_step_size / integrator.courant_number,

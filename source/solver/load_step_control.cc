@@ -2,6 +2,8 @@
 #include <impm/solver/load_step_control.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace impm
@@ -22,6 +24,17 @@ namespace impm
   {
     return nominal_step > parameters.minimum_step ? parameters.minimum_step :
                                                     nominal_step / 1024.;
+  }
+
+
+
+  double
+  LoadStepControl::explicit_limit(const NewtonRecord &record) const
+  {
+    if (!record.explicit_step || !(end_time > 0.) ||
+        !std::isfinite(record.largest_time_step))
+      return std::numeric_limits<double>::infinity();
+    return record.largest_time_step / end_time;
   }
 
 
@@ -90,9 +103,13 @@ namespace impm
         // An easy step doubles the next, and so does a run of steady steps
         // below the nominal increment; not to an increment a coupling
         // refused (a rigid body's motion is proportional to it).
-        const double grown = std::min(2. * step_size, nominal_step);
+        // An explicit step grows no further than its start's stable step
+        // allows (so that a run whose stable step fell is not refused
+        // every other step).
+        const double grown =
+          std::min({2. * step_size, nominal_step, explicit_limit(record)});
         if (!parameters.step_control || !(grown < refused_increment) ||
-            grown == step_size)
+            !(grown > step_size))
           return;
         if (record.n_iterations() <= parameters.easy_iterations)
           {
@@ -170,8 +187,8 @@ namespace impm
       throw LoadStepFailure(message.str() +
                               " Relative residuals:" + failures.str(),
                             load_factor);
-    step_size /= 2.;
-    n_steady = 0;
+    step_size = std::min(step_size / 2., explicit_limit(record));
+    n_steady  = 0;
     // A growth by steady steps that failed at once: the next needs twice
     // as many.
     if (untried_steady_growth)

@@ -162,7 +162,9 @@ namespace impm
     {
       TimerOutput::Scope scope(timer, "point update");
       const std::string  failure =
-        couplings.step_solver()->step_increment(system, displacement_increment);
+        couplings.step_solver()->step_increment(system,
+                                                displacement_increment,
+                                                record.largest_time_step);
       if (!failure.empty())
         {
           record.outcome = NewtonOutcome::above_stable_step;

@@ -200,31 +200,30 @@ namespace impm
     virtual void
     set_start_residual(const NodalVector &internal_minus_external);
 
-    /**
-     * @brief Whether this coupling finds each step's increment itself
-     * (explicit time integration): the system then has no matrix and a
-     * step no Newton iteration; step_increment() gives the increment after
-     * set_start_residual(). At most one coupling of a scene may. False by
-     * default.
-     */
+    /** @brief Whether this coupling finds each step's increment itself
+     *  (explicit time integration): the system then has no matrix and a
+     *  step no Newton iteration; step_increment() gives the increment after
+     *  set_start_residual(). At most one coupling may. False by default. */
     virtual bool
     solves_step() const;
 
     /**
      * @brief The step's increment at the DoFs of the system, owned and
      * ghost (the others keep theirs: zero, or a prescribed face's), when
-     * solves_step().
+     * solves_step(); @p largest_time_step is set to the time step the
+     * coupling allows from this step's start (explicit: the Courant number
+     * times the stable step), or left as it is.
      * @return The empty string, or why the step must be cut (a time step
      *   above the stable one). Collective.
      */
     virtual std::string
-    step_increment(const LoadStepSystem<dim> &system, NodalVector &increment);
+    step_increment(const LoadStepSystem<dim> &system,
+                   NodalVector               &increment,
+                   double                    &largest_time_step);
 
-    /**
-     * @brief Why this coupling cannot be part of a scene whose steps are
-     * explicit (Couplings::step_solver()), in one line; empty (the default)
-     * if it can. Asked once, when the couplings are made.
-     */
+    /** @brief Why this coupling cannot be part of a scene whose steps are
+     *  explicit (Couplings::step_solver()), in one line; empty (the
+     *  default) if it can. Asked once, when the couplings are made. */
     virtual std::string
     explicit_step_conflict() const;
 

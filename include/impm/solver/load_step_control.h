@@ -110,6 +110,12 @@ namespace impm
     double
     smallest_step() const;
 
+    /** @brief An explicit step's largest increment from its start at the
+     *  Courant number (NewtonRecord::largest_time_step over the end time),
+     *  which a cut goes to and growth stops at; infinite otherwise. */
+    double
+    explicit_limit(const NewtonRecord &record) const;
+
     const Parameters::Solver &parameters;
     /** The scene's end time in s (0: none). */
     const double end_time;

@@ -146,6 +146,9 @@ namespace impm
     /** Whether the step was explicit: no Newton solve, no residual (its
      *  outcome is that of the explicit update). */
     bool explicit_step = false;
+    /** An explicit step: the largest time step (s) its start allows at
+     *  the Courant number (infinite if none is known). */
+    double largest_time_step = std::numeric_limits<double>::infinity();
     /** The residual evaluations of the line search ('Solver/Line
      *  search') beyond one per iterate: one per halving of a correction,
      *  and one to return to the best step tried. */
