@@ -18,11 +18,21 @@
 //     With the search it is halved to 0.36 (|r| = 0.778 < 1.167) and
 //     converges to 0.5 (0.4608, 0.4969, 0.49998, ...: 6 iterations);
 //   a problem the full step already solves (r = x - 3 from x = 0) takes
-//     one iteration and no line-search residual either way.
+//     one iteration and no line-search residual either way;
+//   a spring against a stop, r(x) = x + 9 max(x - 1, 0) - 2 (in contact for
+//     x > 1, slope 1 outside and 10 inside), from x = 0: the full step
+//     lands on x = 2 across the contact's switch with |r| = 9 > 2; a step
+//     across which a contact changed state is taken as it is, so both
+//     solves go on from x = 2 to 1.1: converged after 2 iterations with no
+//     line-search residual. (Had the search judged it by the residual's
+//     fall it would halve to x = 1, whose step crosses the switch again, and
+//     halve to 1.125: 3 iterations and 4 line-search residuals,
+//     measured.)
 
 #include <impm/solver/newton_solver.h>
 #include <impm/solver/solver_parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -40,11 +50,14 @@ namespace
     ScalarProblem(std::function<double(double)> residual_function,
                   std::function<double(double)> derivative,
                   std::function<bool(double)>   admissible,
-                  const double                  start)
+                  const double                  start,
+                  std::function<bool(double)>   in_contact = {})
       : residual_function(std::move(residual_function))
       , derivative(std::move(derivative))
       , admissible(std::move(admissible))
+      , in_contact(std::move(in_contact))
       , x(start)
+      , contact_state(this->in_contact && this->in_contact(start))
     {}
 
     Residual
@@ -59,6 +72,11 @@ namespace
           result.norm                = std::abs(r);
           result.internal_force_norm = 1.;
           last_residual              = r;
+        }
+      if (in_contact)
+        {
+          result.contact_changed = in_contact(x) != contact_state;
+          contact_state          = in_contact(x);
         }
       return result;
     }
@@ -88,10 +106,14 @@ namespace
     std::function<double(double)> residual_function;
     std::function<double(double)> derivative;
     std::function<bool(double)>   admissible;
-    double                        x;
-    double                        last_residual = 0.;
-    double                        slope         = 1.;
-    double                        correction    = 0.;
+    /** Whether x is in contact (empty: no contact). */
+    std::function<bool(double)> in_contact;
+    double                      x;
+    /** The contact's state at the last evaluation. */
+    bool   contact_state;
+    double last_residual = 0.;
+    double slope         = 1.;
+    double correction    = 0.;
   };
 
   void
@@ -146,6 +168,14 @@ main()
                           [](double) { return 1.; },
                           always,
                           0.),
+            search);
+      solve("spring against a stop from 0",
+            ScalarProblem(
+              [](double x) { return x + 9. * std::max(x - 1., 0.) - 2.; },
+              [](double x) { return x > 1. ? 10. : 1.; },
+              always,
+              0.,
+              [](double x) { return x > 1.; }),
             search);
     }
 }

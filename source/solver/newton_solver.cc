@@ -98,7 +98,12 @@ namespace impm
              (meets_tolerance(residual) ||
               residual.relative <= (1. - 1e-4 * step) * previous);
     };
-    if (enough(full, 1.))
+    // A full step across which a contact changed state (stick and slip,
+    // contact and separation) is taken as it is: the residual jumps where
+    // the active set changes, so its fall is no measure there, and
+    // halving would hold the iterate at the switch (a rigid footing then
+    // cycled to the iteration limit).
+    if (enough(full, 1.) || (usable(full) && full.contact_changed))
       return full;
     constexpr unsigned int     max_halvings = 5;
     NonlinearProblem::Residual residual     = full;
