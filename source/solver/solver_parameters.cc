@@ -103,7 +103,9 @@ namespace impm
           "residual that has not fallen by 1e-4 of the step (Armijo's "
           "condition), the step is halved, up to 5 times (each one "
           "residual evaluation, no matrix); if none is enough, the step "
-          "of the smallest residual is kept. For scenes whose Newton "
+          "of the smallest residual is kept. A full step across which a "
+          "contact changed state is taken whole (the residual jumps where "
+          "the contact's state switches). For scenes whose Newton "
           "iterations cycle where points change return region (a plastic "
           "flow, the Mohr-Coulomb corners, a tension cut-off) instead of "
           "converging; false: the full correction always.");

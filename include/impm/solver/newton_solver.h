@@ -251,7 +251,8 @@ namespace impm
      * the step along the correction, up to 5 times, until one has; if none
      * has, keep the step of the smallest admissible residual tried (if
      * none was admissible, the last tried: the solve fails as with the full
-     * step). Returns the kept iterate's residual; counts its residual
+     * step). A full step across which a contact changed state is kept
+     * whole. Returns the kept iterate's residual; counts its residual
      * evaluations in @p record.
      */
     NonlinearProblem::Residual
