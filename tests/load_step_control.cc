@@ -18,6 +18,12 @@
 //   2e-4 of the internal forces (2 N of 1e4 N) are no round-off: the
 //   message names Newton's cycling and 'Solver/Line search' (with the line
 //   search on, a smaller increment).
+// The floor: with 10 nominal steps and 'Minimum load step' 1e-4 the tenth
+// failure in a row (0.1 / 2^10 < 1e-4) ends the run and names that entry;
+// with 20,000 nominal steps (5e-5, not above 1e-4) the floor is 1/1024 of
+// the nominal step, 4.8828125e-8, reached at the eleventh failure, and the
+// message says so; in a time run of End time 4 s the same in seconds
+// (1.953125e-7 s).
 
 #include <impm/base/errors.h>
 #include <impm/solver/load_step_control.h>
@@ -132,5 +138,35 @@ main()
     parameters.line_search = true;
     LoadStepControl searching(parameters);
     report(searching);
+  }
+  {
+    std::cout << "The smallest step" << std::endl;
+    const auto fail_until_floor = [](const unsigned int n_steps,
+                                     const double       end_time) {
+      Parameters::Solver parameters = make_parameters(3);
+      parameters.n_load_steps       = n_steps;
+      LoadStepControl control(parameters, end_time);
+      NewtonRecord    record;
+      record.outcome   = NewtonOutcome::iteration_limit;
+      record.residuals = {1., 0.5, 0.4};
+      for (unsigned int failures = 1; failures < 100; ++failures)
+        try
+          {
+            control.update(record);
+          }
+        catch (const LoadStepFailure &failure)
+          {
+            const std::string text  = failure.what();
+            const auto        start = text.find(" The ");
+            std::cout << "failure " << failures << " ends the run:"
+                      << text.substr(start, text.find(" Attempts") - start)
+                      << std::endl;
+            return;
+          }
+      std::cout << "no end after 99 failures" << std::endl;
+    };
+    fail_until_floor(10, 0.);
+    fail_until_floor(20000, 0.);
+    fail_until_floor(20000, 4.);
   }
 }
