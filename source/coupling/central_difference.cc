@@ -38,14 +38,25 @@ namespace impm
 
 
   double
+  surface_modulus(const Material &material,
+                  const double    contact_penalty,
+                  const double    surface_stiffness,
+                  const double    h)
+  {
+    return 0.5 * (contact_penalty * material.elastic_modulus() +
+                  surface_stiffness * h);
+  }
+
+
+
+  double
   explicit_modulus(const Material &material,
                    const double    contact_penalty,
                    const double    surface_stiffness,
                    const double    h)
   {
     return material.p_wave_modulus() +
-           0.5 * (contact_penalty * material.elastic_modulus() +
-                  surface_stiffness * h);
+           surface_modulus(material, contact_penalty, surface_stiffness, h);
   }
 
 
@@ -64,14 +75,19 @@ namespace impm
     double       largest = 0.;
     for (const auto &point : material_points.particles())
       {
+        // The material's stiffness and the point's mass both go with its
+        // initial volume (Kirchhoff stress), so its speed of sound is that
+        // of its reference density whatever its volume change; a surface's
+        // springs act on its current volume's mass.
         const PointState<dim> state(point.get_properties());
-        const double          density = state.mass() / state.volume();
-        largest                       = std::max(largest,
-                           explicit_modulus(*steps.of(point).material,
-                                            contact_penalty,
-                                            surface_stiffness,
-                                            h) /
-                             density);
+        const Material       &material = *steps.of(point).material;
+        const double volume_ratio = state.volume() / state.initial_volume();
+        const double modulus =
+          material.p_wave_modulus_at(state.kirchhoff_stress()) +
+          volume_ratio *
+            surface_modulus(material, contact_penalty, surface_stiffness, h);
+        largest =
+          std::max(largest, modulus * state.initial_volume() / state.mass());
       }
     const double speed = std::sqrt(Utilities::MPI::max(largest, communicator));
     return speed > 0. ? courant_number * h / speed :

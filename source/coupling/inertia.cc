@@ -86,11 +86,13 @@ namespace impm
      * iteration (Coupling::solves_step()). The step is stable below
      * @f$\Delta t_c = C\, h_{min} / c_p@f$, with the Courant number C,
      * the smallest cell size and the largest speed of sound of the
-     * points, @f$c_p = \sqrt{M / \rho}@f$ from their material's P-wave
-     * modulus (Material::p_wave_modulus()) and current density, checked
-     * when the scene is made (a nominal time step above it is refused,
-     * naming it) and every step (a step is cut when the points' state has
-     * brought the limit at Courant number 1 below it).
+     * points, @f$c_p = \sqrt{M / \rho_0}@f$ from their material's P-wave
+     * modulus and reference density, checked when the scene is made (the
+     * initial state: a nominal time step above it is refused, naming it)
+     * and every step (stable_time_step(): with the modulus of each point's
+     * stress, so that a Cam-clay body stiffening under load cuts the step;
+     * a step is cut when the points' state has brought the limit below
+     * it).
      *
      * A converged step updates each point (FLIP): @f$v_p \mathrel{+}=
      * \sum_I N_{Ip} (v_I^{n+1} - v_I^n)@f$, @f$a_p = \sum_I N_{Ip}

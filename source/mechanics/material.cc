@@ -71,6 +71,14 @@ namespace impm
 
 
   double
+  Material::p_wave_modulus_at(const SymmetricTensor<2, 3> &) const
+  {
+    return p_wave_modulus();
+  }
+
+
+
+  double
   Material::shear_modulus() const
   {
     const double E = elastic_modulus(), M = p_wave_modulus();

@@ -512,6 +512,18 @@ namespace impm
 
 
 
+  double
+  ModifiedCamClay::p_wave_modulus_at(
+    const SymmetricTensor<2, 3> &kirchhoff_stress) const
+  {
+    return std::max(mean_pressure(kirchhoff_stress),
+                    parameters.reference_pressure) /
+             kappa_star +
+           4. * mu / 3.;
+  }
+
+
+
   namespace
   {
     const bool modified_cam_clay_registered = MaterialList::register_plugin(

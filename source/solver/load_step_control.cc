@@ -187,11 +187,17 @@ namespace impm
       throw LoadStepFailure(message.str() +
                               " Relative residuals:" + failures.str(),
                             load_factor);
-    step_size = std::min(step_size / 2., explicit_limit(record));
-    n_steady  = 0;
+    // An explicit step above its start's stable step goes to the Courant
+    // number's share of it (below the refused step, since the refusal was
+    // above the stable step itself); any other failure halves the step.
+    const bool above_stable_step =
+      record.outcome == NewtonOutcome::above_stable_step;
+    step_size = std::min(above_stable_step ? step_size : step_size / 2.,
+                         explicit_limit(record));
+    n_steady = 0;
     // A growth by steady steps that failed at once: the next needs twice
     // as many.
-    if (untried_steady_growth)
+    if (untried_steady_growth && !above_stable_step)
       n_steady_needed *= 2;
     untried_steady_growth = false;
     if (step_size < smallest_step())

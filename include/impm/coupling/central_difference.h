@@ -48,6 +48,19 @@ namespace impm
   contact_penalty_factor(const std::vector<RigidBody<dim>> &rigid_bodies);
 
   /**
+   * @brief What a surface adds to the modulus that sets the stable
+   * explicit step of @p material: half of @p contact_penalty
+   * (contact_penalty_factor()) times its Young's modulus and of @p
+   * surface_stiffness (Pa/m, Coupling::surface_stiffness(): springs on a
+   * face) times the cell size @p h (explicit_modulus()).
+   */
+  double
+  surface_modulus(const Material &material,
+                  const double    contact_penalty,
+                  const double    surface_stiffness,
+                  const double    h);
+
+  /**
    * @brief The modulus that sets the stable explicit step of @p material:
    * its P-wave modulus, plus half of what the surface adds: @p
    * contact_penalty (contact_penalty_factor()) times its Young's modulus,
@@ -66,10 +79,15 @@ namespace impm
    * @brief The stable time step of the explicit central difference rule
    * for the points' current state: @p courant_number times the smallest
    * cell size over the largest speed of sound of the points, @f$c =
-   * \sqrt{M_e/\rho}@f$ with the modulus explicit_modulus() of their
-   * material (its P-wave modulus, stiffened by the contact of rigid bodies,
-   * @p contact_penalty, and by springs on faces, @p surface_stiffness) and
-   * their current density. Collective.
+   * \sqrt{(M(\tau) + J M_s)/\rho_0}@f$ with the P-wave modulus of their
+   * material in their Kirchhoff stress (Material::p_wave_modulus_at(): a
+   * Cam-clay point stiffens with its mean stress), their reference density
+   * @f$\rho_0@f$ (a point's mass and its material's Kirchhoff stiffness both go
+   * with its initial volume, so a stretched or compressed point keeps its speed
+   * of sound), and, on the mass of their current volume, what the contact of
+   * rigid
+   * bodies, @p contact_penalty, and springs on faces, @p
+   * surface_stiffness, add (surface_modulus()). Collective.
    */
   template <int dim>
   double

@@ -315,6 +315,21 @@ namespace impm
     p_wave_modulus() const = 0;
 
     /**
+     * @brief The elastic P-wave modulus in the state of Kirchhoff stress
+     * @p kirchhoff_stress: the tangent of the Kirchhoff stress against the
+     * logarithmic strain along one axis with the others held, so that the
+     * speed of sound of a point is @f$\sqrt{M/\rho_0}@f$ with its
+     * reference density whatever its volume change (the mass and the
+     * Kirchhoff stiffness of a point both go with its initial volume). The
+     * default is p_wave_modulus(), for a law whose elasticity does not
+     * depend on the stress; a pressure-dependent law gives that of the
+     * state, so that an explicit step follows its stiffening.
+     */
+    virtual double
+    p_wave_modulus_at(
+      const dealii::SymmetricTensor<2, 3> &kirchhoff_stress) const;
+
+    /**
      * @brief The shear modulus @f$\mu@f$ of the elastic law (a
      * pressure-dependent law's at its reference state), for the elastic
      * stiffness of a stiffness-proportional damping (StiffnessDamping). The

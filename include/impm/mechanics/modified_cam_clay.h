@@ -245,10 +245,18 @@ namespace impm
     elastic_modulus() const override;
 
     /** @brief @f$K + 4\mu/3@f$ at the reference pressure (the bulk
-     *  modulus grows with the mean stress: an explicit step near the limit
-     *  at higher pressures needs a smaller Courant number). */
+     *  modulus grows with the mean stress: an explicit step's limit takes
+     *  each point's, p_wave_modulus_at()). */
     double
     p_wave_modulus() const override;
+
+    /** @brief @f$p'/\kappa^* + 4\mu/3@f$ at the mean stress @f$p' =
+     *  -\mathrm{tr}\,\tau/3@f$ of @p kirchhoff_stress (the tangent bulk
+     *  modulus of @f$p' = p_{ref} \exp(\varepsilon_v^e/\kappa^*)@f$), or
+     *  that of the reference pressure where @f$p'@f$ is below it. */
+    double
+    p_wave_modulus_at(
+      const dealii::SymmetricTensor<2, 3> &kirchhoff_stress) const override;
 
     /** @brief The constant shear modulus. */
     double

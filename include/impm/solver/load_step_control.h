@@ -71,8 +71,11 @@ namespace impm
     /**
      * @brief Advance or cut after an attempt with @p record (whose outcome
      * is the judged one, or NewtonOutcome::step_refused: cut, or stop at
-     * once when no smaller step may pass). Throws a LoadStepFailure with
-     * the message for the user when the run cannot go on.
+     * once when no smaller step may pass). A failure halves the step (no
+     * further than explicit_limit()); an explicit step above its start's
+     * stable step (NewtonOutcome::above_stable_step) goes straight to
+     * explicit_limit(). Throws a LoadStepFailure with the message for the
+     * user when the run cannot go on.
      */
     void
     update(const NewtonRecord &record);
