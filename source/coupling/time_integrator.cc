@@ -287,7 +287,11 @@ namespace impm
     std::ostringstream out;
     if (is_explicit())
       out << "explicit central differences ("
-          << (explicit_order == ExplicitOrder::musl ? "MUSL" : "USL")
+          << (explicit_order == ExplicitOrder::musl ?
+                "MUSL" :
+                "USL: not stable where points enter cells their neighbours "
+                "do not fill, whose nodes' small masses make the velocity "
+                "jump; MUSL is")
           << ", Courant number " << courant_number << ")";
     else if (generalised_alpha)
       out << "generalised-alpha (spectral radius " << spectral_radius
