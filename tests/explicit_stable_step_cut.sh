@@ -21,9 +21,10 @@
 #    cut to it and the run follows it to 3 s; its strain energy equals that
 #    of a run at 0.005 s within 0.5 %.
 # tests/check_explicit_stable_step_cut.py checks both from the point files
-# alone: every step taken within C h / sqrt(M / rho0) of its start state,
-# every refusal above it, the end time reached; the bar's stress against
-# E ln(J) / J.
+# alone: every step taken within h / sqrt(M / rho0) of its start state
+# (Courant number 1, where a step is refused), every refusal above it and
+# the attempt after it the Courant number C times it, the end time reached;
+# the bar's stress against E ln(J) / J.
 # Usage: explicit_stable_step_cut.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)

@@ -23,16 +23,10 @@ namespace impm
                       "MUSL' (the increment from the updated points' "
                       "momentum) or 'explicit USL' (from the nodes' "
                       "velocity), with its time step below 'Courant "
-                      "number' times the stable one. USL is not stable "
-                      "where a point enters a cell its neighbours do "
-                      "not fill (a free surface's points crossing a "
-                      "face; with GIMP, a domain just reaching a node): "
-                      "the node's small mass turns the point's stress "
-                      "into a large velocity that USL uses as it is "
-                      "(the vibrating bar with 4x4 points per cell at "
-                      "Courant number 0.5 gains 66 times its energy; "
-                      "doc/benchmarks/inertia.md); MUSL maps it back "
-                      "through the points and stays stable.");
+                      "number' times the stable one. USL is unstable "
+                      "where a point enters a cell its neighbours do not "
+                      "fill: the node's small mass makes its velocity "
+                      "jump (doc/benchmarks/inertia.md); MUSL is not.");
     prm.declare_entry("Courant number",
                       "0.5",
                       Patterns::Double(0., 1.),
@@ -289,9 +283,8 @@ namespace impm
       out << "explicit central differences ("
           << (explicit_order == ExplicitOrder::musl ?
                 "MUSL" :
-                "USL: not stable where points enter cells their neighbours "
-                "do not fill, whose nodes' small masses make the velocity "
-                "jump; MUSL is")
+                "USL, unstable where points enter cells their neighbours "
+                "do not fill; MUSL is not")
           << ", Courant number " << courant_number << ")";
     else if (generalised_alpha)
       out << "generalised-alpha (spectral radius " << spectral_radius

@@ -81,13 +81,13 @@ namespace impm
    * cell size over the largest speed of sound of the points, @f$c =
    * \sqrt{(M(\tau) + J M_s)/\rho_0}@f$ with the P-wave modulus of their
    * material in their Kirchhoff stress (Material::p_wave_modulus_at(): a
-   * Cam-clay point stiffens with its mean stress), their reference density
-   * @f$\rho_0@f$ (a point's mass and its material's Kirchhoff stiffness both go
-   * with its initial volume, so a stretched or compressed point keeps its speed
-   * of sound), and, on the mass of their current volume, what the contact of
-   * rigid
-   * bodies, @p contact_penalty, and springs on faces, @p
-   * surface_stiffness, add (surface_modulus()). Collective.
+   * Cam-clay point stiffens with its mean stress), their reference
+   * density @f$\rho_0@f$ (a point's mass and its material's Kirchhoff
+   * stiffness both go with its initial volume, so a stretched or
+   * compressed point keeps its speed of sound), and, on the mass of their
+   * current volume, what the contact of rigid bodies, @p contact_penalty,
+   * and springs on faces, @p surface_stiffness, add (surface_modulus()).
+   * Collective.
    */
   template <int dim>
   double
