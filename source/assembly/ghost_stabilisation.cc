@@ -161,6 +161,25 @@ namespace impm
 
 
   template <int dim>
+  void
+  GhostStabilisation<dim>::add_step_energy(const LoadStepSystem<dim> &,
+                                           const NodalVector &increment,
+                                           StepEnergy        &energy)
+  {
+    NodalVector force;
+    force.reinit(increment);
+    penalty.add_forces(increment, 1., force);
+    force.compress(VectorOperation::add);
+    // Half the force times the increment: the penalty grows from zero
+    // with the step's increment and starts from zero again in the next.
+    for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
+      energy.dissipated +=
+        0.5 * force.local_element(i) * increment.local_element(i);
+  }
+
+
+
+  template <int dim>
   bool
   GhostStabilisation<dim>::add_constant_matrix(
     const LoadStepSystem<dim>      &system,

@@ -81,9 +81,8 @@ namespace impm
 
   template <int dim>
   void
-  RigidContact<dim>::add_start_forces(const LoadStepSystem<dim> &system,
-                                      const NodalVector &,
-                                      NodalVector &internal_force)
+  RigidContact<dim>::visit_start_probes(
+    const std::function<void(unsigned int, const Probe &)> &visit)
   {
     // evaluate() reads the bodies' poses of the attempt's end: set them to
     // the start's for the evaluation, and back.
@@ -98,17 +97,59 @@ namespace impm
         rotation_increment[b]     = unit_symmetric_tensor<dim>();
         displacement_increment[b] = Tensor<1, dim>();
       }
-    for (const Probe &start_probe : probes)
+    for (unsigned int k = 0; k < probes.size(); ++k)
       {
-        Probe probe = start_probe;
+        Probe probe = probes[k];
         evaluate(probe, probe.start_position);
-        if (probe.active)
-          subtract_probe_force(probe, system, internal_force);
+        visit(k, probe);
       }
     displacement           = end_displacement;
     rotation               = end_rotation;
     rotation_increment     = end_turn;
     displacement_increment = end_increment;
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::add_start_forces(const LoadStepSystem<dim> &system,
+                                      const NodalVector &,
+                                      NodalVector &internal_force)
+  {
+    visit_start_probes([&](unsigned int, const Probe &probe) {
+      if (probe.active)
+        subtract_probe_force(probe, system, internal_force);
+    });
+  }
+
+
+
+  template <int dim>
+  void
+  RigidContact<dim>::add_step_energy(const LoadStepSystem<dim> &system,
+                                     const NodalVector         &increment,
+                                     StepEnergy                &energy)
+  {
+    std::vector<Tensor<1, dim>> start_forces(probes.size());
+    visit_start_probes([&](unsigned int k, const Probe &probe) {
+      if (probe.active)
+        start_forces[k] = probe.normal_force + probe.friction_force;
+    });
+    for (unsigned int k = 0; k < probes.size(); ++k)
+      {
+        const Probe          &probe = probes[k];
+        const PointStep<dim> &step  = system.point_steps[probe.point];
+        Tensor<1, dim>        movement;
+        for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+          for (unsigned int i = 0; i < dim; ++i)
+            movement[i] += probe.weights[v] *
+                           increment.local_element(step.dofs[v * dim + i]);
+        Tensor<1, dim> mean_force = 0.5 * start_forces[k];
+        if (probe.active)
+          mean_force += 0.5 * (probe.normal_force + probe.friction_force);
+        energy.external_work += mean_force * movement;
+      }
   }
 
 

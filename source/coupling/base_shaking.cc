@@ -196,15 +196,16 @@ namespace impm
                     const LoadStepSystem<dim> &system,
                     const StepSpan            &span) override
       {
-        acceleration = scale * history.value(span.end_time);
-        const Tensor<1, dim> start_acceleration =
-          scale * history.value(span.start_time);
+        acceleration       = scale * history.value(span.end_time);
+        start_acceleration = scale * history.value(span.start_time);
+        masses.resize(system.point_steps.size());
         NodalVector &load       = nodal_load.reset(grid);
         NodalVector &start_load = start_nodal_load.reset(grid);
         for (const auto &point : material_points.particles())
           {
             const PointStep<dim> &step = system.point_steps.of(point);
             const double m = PointState<dim>(point.get_properties()).mass();
+            masses[system.point_steps.index_of(point)] = m;
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               for (unsigned int i = 0; i < dim; ++i)
                 {
@@ -236,6 +237,27 @@ namespace impm
                  NodalVector &internal_force) override
       {
         nodal_load.subtract_from(internal_force);
+      }
+
+      /** @brief The load's work on the material: each point's mass times
+       *  minus the mean of the start's and the end's acceleration (the
+       *  load is linear in time between them), times its displacement. */
+      void
+      add_step_energy(const LoadStepSystem<dim> &system,
+                      const NodalVector         &increment,
+                      StepEnergy                &energy) override
+      {
+        // The nodal load's weights (without GIMP's radial offset).
+        const Tensor<1, dim> mean = 0.5 * (acceleration + start_acceleration);
+        for (unsigned int p = 0; p < system.point_steps.size(); ++p)
+          {
+            const PointStep<dim> &step = system.point_steps[p];
+            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
+              for (unsigned int i = 0; i < dim; ++i)
+                energy.external_work -=
+                  masses[p] * mean[i] * step.support.weights[v] *
+                  increment.local_element(step.dofs[v * dim + i]);
+          }
       }
 
       /** @brief The size of the load. */
@@ -293,6 +315,10 @@ namespace impm
       const BackgroundGrid<dim> &grid;
       /** The base's acceleration at the step's end. */
       Tensor<1, dim> acceleration;
+      /** The base's acceleration at the step's start time. */
+      Tensor<1, dim> start_acceleration;
+      /** The points' masses, by step index. */
+      std::vector<double> masses;
       /** The nodal load -M a_g of the step's end and of its start. */
       FixedNodalLoad<dim> nodal_load, start_nodal_load;
     };

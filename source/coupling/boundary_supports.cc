@@ -199,6 +199,28 @@ namespace impm
         return true;
       }
 
+      /** @brief The springs' and dashpots' work on the material: minus
+       *  the springs' mean force over the step (linear in the face's
+       *  displacement, so exact) and the dashpots' force of the step's mean
+       *  velocity, times the face's displacement in the step. */
+      void
+      add_step_energy(const LoadStepSystem<dim> &,
+                      const NodalVector &,
+                      StepEnergy &energy) override
+      {
+        for (const Spring &spring : springs)
+          {
+            const Tensor<1, dim> change =
+              spring.displacement - spring.start_displacement;
+            Tensor<1, dim> mean_force =
+              spring.stiffness *
+              (0.5 * (spring.displacement + spring.start_displacement));
+            if (time_step > 0.)
+              mean_force += spring.damping * change / time_step;
+            energy.external_work -= mean_force * change;
+          }
+      }
+
       /** @brief Keep each face's displacement (on every process: points
        *  move between them) and sum the springs' force. */
       void

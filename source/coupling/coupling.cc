@@ -367,6 +367,31 @@ namespace impm
 
 
   template <int dim>
+  void
+  Coupling<dim>::add_step_energy(const LoadStepSystem<dim> &,
+                                 const NodalVector &,
+                                 StepEnergy &)
+  {}
+
+
+
+  template <int dim>
+  bool
+  Coupling<dim>::keeps_energy_balance() const
+  {
+    return false;
+  }
+
+
+
+  template <int dim>
+  void
+  Coupling<dim>::take_step_energy(const StepEnergy &)
+  {}
+
+
+
+  template <int dim>
   Tensor<1, dim>
   Coupling<dim>::force_from_material() const
   {

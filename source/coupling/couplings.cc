@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <impm/base/errors.h>
-#include <impm/coupling/coupling.h>
+#include <impm/coupling/couplings.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -145,6 +145,40 @@ namespace impm
     for (const auto &coupling : couplings)
       force += coupling->force_from_material();
     return force;
+  }
+
+
+
+  template <int dim>
+  bool
+  Couplings<dim>::keep_energy_balance() const
+  {
+    return std::any_of(couplings.begin(),
+                       couplings.end(),
+                       [](const auto &coupling) {
+                         return coupling->keeps_energy_balance();
+                       });
+  }
+
+
+
+  template <int dim>
+  void
+  Couplings<dim>::account_step_energy(const LoadStepSystem<dim> &system,
+                                      const NodalVector         &increment,
+                                      const double work_of_loads) const
+  {
+    StepEnergy local;
+    for (const auto &coupling : couplings)
+      coupling->add_step_energy(system, increment, local);
+    const MPI_Comm communicator = increment.get_mpi_communicator();
+    StepEnergy     energy;
+    energy.external_work =
+      work_of_loads + Utilities::MPI::sum(local.external_work, communicator);
+    energy.dissipated = Utilities::MPI::sum(local.dissipated, communicator);
+    for (const auto &coupling : couplings)
+      if (coupling->keeps_energy_balance())
+        coupling->take_step_energy(energy);
   }
 
 

@@ -8,6 +8,7 @@
 #include <impm/base/names.h>
 #include <impm/coupling/central_difference.h>
 #include <impm/coupling/coupling.h>
+#include <impm/coupling/energy_balance.h>
 #include <impm/coupling/initial_velocity.h>
 #include <impm/coupling/mass_ghost_penalty.h>
 #include <impm/coupling/newmark_update.h>
@@ -69,37 +70,26 @@ namespace impm
      * (StiffnessDamping), weighed alike.
      *
      * The first step's nodal acceleration is that of the balance at the
-     * start, @f$M a^0 = f_{ext}(0) - f_{int}(0)@f$ (a body under gravity
-     * applied at once starts falling at g), not the points' zero.
+     * start, @f$M a^0 = f_{ext}(0) - f_{int}(0) - \alpha_R M v^0@f$ (a
+     * body under gravity at once starts falling at g), not the points' 0.
      *
      * The explicit integrators (`explicit MUSL`, `explicit USL`) are the
-     * central difference rule with the lumped mass: the nodes'
-     * acceleration from the balance at the step's start, @f$a_I = -r^n_I /
-     * M_I@f$ (minus the mass damping's @f$\alpha_R v_I^n@f$), their new
-     * velocity @f$v_I^{n+1} = v_I^n + \Delta t\, a_I@f$, the points'
-     * velocity from it (the FLIP/PIC blend below) and the increment
-     * @f$\Delta u_I = \Delta t\, v_I^{n+1}@f$: with the nodes' velocity
-     * of the update (USL), or mapped again from the updated points'
-     * momentum (MUSL, Sulsky's modified update). The increment goes
-     * through the same stress update as an implicit step (the pulled-back
-     * stress of the start-of-step grid); there is no matrix and no Newton
-     * iteration (Coupling::solves_step()). The step is stable below
-     * @f$\Delta t_c = C\, h_{min} / c_p@f$, with the Courant number C,
-     * the smallest cell size and the largest speed of sound of the
-     * points, @f$c_p = \sqrt{M / \rho_0}@f$ from their material's P-wave
-     * modulus and reference density, checked when the scene is made (the
-     * initial state: a nominal time step above it is refused, naming it)
-     * and every step (stable_time_step(): with the modulus of each point's
-     * stress, so that a Cam-clay body stiffening under load cuts the step;
-     * a step is cut when the points' state has brought the limit below
-     * it).
+     * central difference rule with the lumped mass
+     * (central_difference_step()): no matrix and no Newton iteration
+     * (Coupling::solves_step()), the increment through the same stress
+     * update as an implicit step. The step is stable below @f$\Delta t_c
+     * = C\, h_{min} / c_p@f$ (Courant number C, smallest cell, largest
+     * speed of sound @f$\sqrt{M/\rho_0}@f$ of the points), checked when
+     * the scene is made and every step from each point's stress
+     * (stable_time_step()): a step above it is cut.
      *
      * A converged step updates each point (FLIP): @f$v_p \mathrel{+}=
      * \sum_I N_{Ip} (v_I^{n+1} - v_I^n)@f$, @f$a_p = \sum_I N_{Ip}
-     * a_I^{n+1}@f$. The trapezoidal rule (@f$\beta = 1/4, \gamma =
-     * 1/2@f$, the default) conserves the energy of the nodal system; the
-     * mapping between points and nodes at each step's start loses the part
-     * of the points' kinetic energy the nodes cannot represent. A FLIP
+     * a_I^{n+1}@f$ (a held or prescribed node: no change of velocity, its
+     * face's mean velocity, no acceleration). The trapezoidal rule
+     * (@f$\beta = 1/4, \gamma = 1/2@f$, the default) conserves the energy
+     * of the nodal system; the transfer between points and nodes does not
+     * (EnergyBalance measures it). A FLIP
      * fraction @f$\phi < 1@f$ blends in PIC: @f$v_p = \phi\,(v_p +
      * \sum_I N_{Ip}\Delta v_I) + (1 - \phi) \sum_I N_{Ip} v_I^{n+1}@f$,
      * which damps the points' velocity noise. APIC (`Velocity update`)
@@ -108,8 +98,8 @@ namespace impm
      * stays rigid.
      *
      * The points' `velocity` and `acceleration` are declared point fields
-     * (written, kept in checkpoints); the kinetic, elastic (strain) and
-     * total energy are step measures. A scene that does not name inertia
+     * (written, kept in checkpoints); the energy balance (EnergyBalance)
+     * gives the step measures. A scene that does not name inertia
      * creates none of this.
      *
      * @tparam dim Space dimension.
@@ -130,6 +120,7 @@ namespace impm
                           "the quasi-static statement, with no mass matrix "
                           "and no velocities stored.");
         TimeIntegrator::declare_parameters(prm);
+        EnergyBalance<dim>::declare_parameters(prm);
         MassGhostPenalty<dim>::declare_parameters(prm);
         InitialVelocity<dim>::declare_parameters(prm);
       }
@@ -149,6 +140,8 @@ namespace impm
                      inputs.grid,
                      inputs.parameters.bodies)
         , inputs(inputs)
+        , energy_balance(inputs.prm,
+                         grid.get_triangulation().get_communicator())
       {
         if (!inputs.time.in_time())
           throw InputError("Inertia needs time: set 'Time/End time' above 0 "
@@ -157,7 +150,7 @@ namespace impm
           inputs.parameters.material_points.basis,
           !inputs.parameters.rigid_bodies.empty(),
           Utilities::MPI::this_mpi_process(
-            inputs.grid.get_triangulation().get_communicator()) == 0);
+            grid.get_triangulation().get_communicator()) == 0);
       }
 
       /** @brief Refuse a time step above the stable explicit step, with
@@ -210,11 +203,31 @@ namespace impm
                                     integrator.affine_transfer);
       }
 
-      /** @brief A resumed run's points carry their accelerations. */
       void
-      load(const RunState &) override
+      save(RunState &state) const override
       {
+        energy_balance.save(state);
+      }
+
+      /** @brief A resumed run's points carry their accelerations; the
+       *  energy balance goes on from its sums. */
+      void
+      load(const RunState &state) override
+      {
+        energy_balance.load(state);
         started = true;
+      }
+
+      /** @brief True: a scene with inertia keeps an energy balance. */
+      bool
+      keeps_energy_balance() const override
+      {
+        return true;
+      }
+      void
+      take_step_energy(const StepEnergy &energy) override
+      {
+        energy_balance.take(energy);
       }
 
       /** @brief The mass ghost penalty's faces of the step. */
@@ -245,6 +258,9 @@ namespace impm
                     const StepSpan            &span) override
       {
         time_step = span.time_step();
+        end_time  = span.end_time;
+        if (!started)
+          energy_balance.start(material_points, system.point_steps);
         nodes.map_points(material_points, system);
         stiffness_damping.begin_step(material_points, system.point_steps);
         start_residual.clear();
@@ -274,7 +290,9 @@ namespace impm
       bool
       needs_start_residual() const override
       {
-        return integrator.alpha_f > 0. || !started || integrator.is_explicit();
+        // A moving face's force at the start enters the energy balance.
+        return integrator.alpha_f > 0. || !started ||
+               integrator.is_explicit() || grid.moves_faces();
       }
 
       /** @brief True with an explicit integrator. */
@@ -300,7 +318,7 @@ namespace impm
                                 grid.cartesian());
         if (!refusal.empty())
           return refusal;
-        for (unsigned int i = 0; i < n_local(); ++i)
+        for (unsigned int i = 0; i < nodes.n_local(); ++i)
           if (system.system_index(i) != numbers::invalid_dof_index)
             increment.local_element(i) = explicit_increment[i];
         return "";
@@ -308,42 +326,53 @@ namespace impm
 
       /** @brief Keep the start's residual (generalised-alpha), and on the
        *  first step set the nodes' mass times acceleration to the start's
-       *  balance, @f$M a^0 = -r^0@f$. */
+       *  balance, @f$M a^0 = -r^0 - \alpha_R M v^0@f$. */
       void
       set_start_residual(const NodalVector &internal_minus_external) override
       {
         if (integrator.is_explicit())
           {
-            central_difference_step(
-              nodes,
+            const NodalVector &residual =
               stiffness_damping.active() ?
                 stiffness_damping.damped_residual(nodes,
                                                   *current_system,
                                                   internal_minus_external) :
-                internal_minus_external,
-              time_step,
-              integrator,
-              *current_points,
-              current_system->point_steps,
-              explicit_increment,
-              point_velocities,
-              point_accelerations,
-              point_velocity_gradients);
+                internal_minus_external;
+            const unsigned int n_owned = grid.n_locally_owned_dofs();
+            damping_dissipation =
+              central_difference_step(nodes,
+                                      residual,
+                                      time_step,
+                                      integrator,
+                                      *current_points,
+                                      current_system->point_steps,
+                                      explicit_increment,
+                                      point_velocities,
+                                      point_accelerations,
+                                      point_velocity_gradients,
+                                      n_owned,
+                                      nodal_kinetic);
+            if (stiffness_damping.active())
+              damping_dissipation +=
+                stiffness_damping.explicit_dissipation(explicit_increment,
+                                                       n_owned);
             return;
           }
         if (integrator.alpha_f > 0.)
           {
-            start_residual.resize(n_local());
-            for (unsigned int i = 0; i < n_local(); ++i)
+            start_residual.resize(nodes.n_local());
+            for (unsigned int i = 0; i < nodes.n_local(); ++i)
               start_residual[i] = nodes.in_system(i) ?
                                     internal_minus_external.local_element(i) :
                                     0.;
           }
         if (!started)
-          for (unsigned int i = 0; i < n_local(); ++i)
+          for (unsigned int i = 0; i < nodes.n_local(); ++i)
             if (nodes.in_system(i) && nodes.mass(i) > 0.)
               nodes.set_mass_acceleration(
-                i, -internal_minus_external.local_element(i));
+                i,
+                -internal_minus_external.local_element(i) -
+                  integrator.mass_damping * nodes.momentum(i));
       }
 
       /** @brief The mass term of the matrix on the diagonal of the owned
@@ -386,59 +415,44 @@ namespace impm
       {
         if (integrator.is_explicit())
           return;
-        const double c1  = 1. / (integrator.beta * time_step * time_step);
-        const double c2  = 1. / (integrator.beta * time_step);
-        const double c3  = 1. / (2. * integrator.beta) - 1.;
-        const double k_a = integrator.alpha_m / (1. - integrator.alpha_f);
-        const double k_r = integrator.alpha_f / (1. - integrator.alpha_f);
-        double       norm_squared = 0.;
-        force_on_material         = Tensor<1, dim>();
-        // M times the increment: lumped, or the consistent matrix's
-        // product (through the points).
-        const std::vector<double> mass_times_increment =
+        // M du: lumped, or the consistent matrix's (through the points).
+        const NewmarkForceSums sums = add_newmark_forces(
+          nodes,
+          integrator,
+          time_step,
+          increment,
           integrator.consistent_mass ?
             nodes.consistent_mass_times(*current_points,
                                         current_system->point_steps,
                                         increment) :
-            std::vector<double>();
-        for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
-          if (nodes.in_system(i))
-            {
-              const double p = nodes.momentum(i);
-              const double q = nodes.mass_acceleration(i);
-              // M a^{n+1}
-              const double mass_times_acceleration =
-                c1 * (integrator.consistent_mass ?
-                        mass_times_increment[i] +
-                          integrator.mass_regularisation * nodes.mass(i) *
-                            increment.local_element(i) :
-                        nodes.mass(i) * increment.local_element(i)) -
-                c2 * p - c3 * q;
-              double force =
-                integrator.k_m() * mass_times_acceleration + k_a * q;
-              if (!start_residual.empty())
-                force += k_r * start_residual[i];
-              if (integrator.mass_damping > 0.)
-                force +=
-                  integrator.mass_damping *
-                  (p +
-                   time_step * ((1. - integrator.gamma) * q +
-                                integrator.gamma * mass_times_acceleration) +
-                   k_r * p);
-              internal_force.local_element(i) += force;
-              norm_squared += force * force;
-              force_on_material[grid.component(i)] += force;
-            }
-        mass_ghost.add_forces(increment, time_step, internal_force);
-        // The viscous stress: internal, not in force_on_material.
-        if (stiffness_damping.active())
-          norm_squared += stiffness_damping.add_implicit_forces(
-            nodes, *current_system, increment, time_step, internal_force);
+            std::vector<double>(),
+          start_residual,
+          grid,
+          internal_force);
+        double norm_squared = sums.norm_squared;
+        force_on_material   = sums.force;
+        damping_dissipation = sums.damping_dissipation;
+        // The mass's ghost penalty and the viscous stress (internal, not
+        // in force_on_material), summed apart for the energy they take out.
+        if (mass_ghost.active() || stiffness_damping.active())
+          {
+            damping_force.reinit(internal_force);
+            mass_ghost.add_forces(increment, time_step, damping_force);
+            if (stiffness_damping.active())
+              norm_squared += stiffness_damping.add_implicit_forces(
+                nodes, *current_system, increment, time_step, damping_force);
+            damping_force.compress(VectorOperation::add);
+            for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
+              {
+                internal_force.local_element(i) +=
+                  damping_force.local_element(i);
+                damping_dissipation +=
+                  damping_force.local_element(i) * increment.local_element(i);
+              }
+          }
         // The reference: the inertial force, floored by a millionth of its
-        // momentum part M v / (beta dt). A body moving freely (no load, no
-        // acceleration) has an inertial force of round-off size, made of
-        // parts of that size: without the floor its residual could never
-        // fall below the tolerance relative to it.
+        // momentum part M v / (beta dt) (a body moving freely has an
+        // inertial force of round-off size, relative to which it stalls).
         inertial_force_norm =
           std::hypot(std::sqrt(Utilities::MPI::sum(
                        norm_squared,
@@ -462,7 +476,7 @@ namespace impm
       }
 
       /** @brief The points' new velocity and acceleration (and with APIC
-       *  velocity gradient) and the kinetic energy. */
+       *  velocity gradient) and the energy balance. */
       void
       accept(MaterialPoints<dim>       &material_points,
              const LoadStepSystem<dim> &system,
@@ -470,26 +484,26 @@ namespace impm
       {
         const auto &steps = system.point_steps;
         if (!integrator.is_explicit())
-          newmark_point_update(nodes,
-                               increment,
-                               time_step,
-                               integrator,
-                               material_points,
-                               steps,
-                               point_velocities,
-                               point_accelerations,
-                               point_velocity_gradients);
-        double energy = 0., elastic_energy = 0.;
-        for (const auto &point : material_points.particles())
           {
-            const unsigned int p = steps.index_of(point);
-            elastic_energy +=
-              steps[p].initial_volume * elastic_energy_density(steps[p].update);
-            for (unsigned int i = 0; i < dim; ++i)
-              energy += 0.5 * PointState<dim>(point.get_properties()).mass() *
-                        point_velocities[p * dim + i] *
-                        point_velocities[p * dim + i];
+            nodal_kinetic = newmark_point_update(nodes,
+                                                 increment,
+                                                 time_step,
+                                                 integrator,
+                                                 material_points,
+                                                 steps,
+                                                 point_velocities,
+                                                 point_accelerations,
+                                                 point_velocity_gradients,
+                                                 grid.n_locally_owned_dofs());
+            // The mass ghost penalty's share is half its force times du.
+            damping_dissipation -= mass_ghost.dissipation(increment, time_step);
           }
+        energy_balance.accept(material_points,
+                              steps,
+                              point_velocities,
+                              damping_dissipation,
+                              nodal_kinetic,
+                              end_time);
         material_points.set_coupling_field("velocity", steps, point_velocities);
         material_points.set_coupling_field("acceleration",
                                            steps,
@@ -498,51 +512,32 @@ namespace impm
           material_points.set_coupling_field("velocity_gradient",
                                              steps,
                                              point_velocity_gradients);
-        const MPI_Comm communicator =
-          grid.get_triangulation().get_communicator();
-        kinetic_energy = Utilities::MPI::sum(energy, communicator);
-        strain_energy  = Utilities::MPI::sum(elastic_energy, communicator);
         for (unsigned int d = 0; d < dim; ++d)
           accepted_force[d] =
-            Utilities::MPI::sum(force_on_material[d], communicator);
+            Utilities::MPI::sum(force_on_material[d],
+                                grid.get_triangulation().get_communicator());
         started = true;
       }
 
       std::vector<std::string>
       step_measure_columns() const override
       {
-        return {"kinetic_energy", "strain_energy", "total_energy"};
+        return EnergyBalance<dim>::columns();
       }
 
       void
       step_measures(const double,
                     std::vector<StepMeasure> &measures) const override
       {
-        measures.push_back(
-          {"kinetic_energy", "Ek", kinetic_energy, MeasureKind::energy});
-        measures.push_back(
-          {"strain_energy", "Es", strain_energy, MeasureKind::energy});
-        measures.push_back({"total_energy",
-                            "E",
-                            kinetic_energy + strain_energy,
-                            MeasureKind::energy});
+        energy_balance.add_measures(measures);
       }
 
     private:
-      /** The number of local DoFs (owned and ghosts). */
-      unsigned int
-      n_local() const
-      {
-        return nodes.n_local();
-      }
-
-      /** The time integrator. */
-      const TimeIntegrator integrator;
-      /** The points' velocity at the start. */
+      /** The time integrator; the points' velocity at the start. */
+      const TimeIntegrator       integrator;
       const InitialVelocity<dim> initial_velocity;
       const BackgroundGrid<dim> &grid;
-      /** Whether a step was accepted (or the run resumed): the points
-       *  carry accelerations. */
+      /** Whether the points carry accelerations (a step accepted). */
       bool   started   = false;
       double time_step = 0.;
       /** The stable explicit time step of the step's start. */
@@ -579,8 +574,16 @@ namespace impm
       /** The size of the step's momentum part of the inertial force,
        *  @f$|M v^n| / (\beta \Delta t)@f$ (implicit integrators). */
       double momentum_force = 0.;
-      double kinetic_energy = 0.;
-      double strain_energy  = 0.;
+      /** The energy balance. */
+      EnergyBalance<dim> energy_balance;
+      /** The end time of the step's attempt; the energy the damping and
+       *  the mass's ghost penalty took out at this process's owned DoFs in
+       *  the last add_forces() or explicit step; the nodes' kinetic energy
+       *  at its start and end there; the mass ghost penalty's and the
+       *  viscous stress's forces (implicit steps with either). */
+      double             end_time = 0., damping_dissipation = 0.;
+      NodalKineticEnergy nodal_kinetic;
+      NodalVector        damping_force;
       /** The inertial force of the last add_forces() (this process's
        *  owned DoFs) and of the accepted step (all). */
       Tensor<1, dim> force_on_material, accepted_force;

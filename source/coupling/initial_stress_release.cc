@@ -173,6 +173,17 @@ namespace impm
         released.subtract_from(internal_force);
       }
 
+      /** @brief The released force's work on the material: the step's
+       *  end force times the increment (first order in the step: the force
+       *  falls from the start's to the end's within it). */
+      void
+      add_step_energy(const LoadStepSystem<dim> &,
+                      const NodalVector &increment,
+                      StepEnergy        &energy) override
+      {
+        energy.external_work += released.work(increment);
+      }
+
       /** @brief The size of the released force still applied. */
       double
       reference_force() const override

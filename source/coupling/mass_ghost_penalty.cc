@@ -97,6 +97,25 @@ namespace impm
 
 
   template <int dim>
+  double
+  MassGhostPenalty<dim>::dissipation(const NodalVector &increment,
+                                     const double       time_step) const
+  {
+    if (!penalty)
+      return 0.;
+    NodalVector force;
+    force.reinit(increment);
+    penalty->add_forces(increment, factor(time_step), force);
+    force.compress(VectorOperation::add);
+    double sum = 0.;
+    for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
+      sum += 0.5 * force.local_element(i) * increment.local_element(i);
+    return sum;
+  }
+
+
+
+  template <int dim>
   void
   MassGhostPenalty<dim>::add_matrix(
     const LoadStepSystem<dim>      &system,

@@ -214,12 +214,27 @@ namespace impm
       velocity[i] = nodes.in_system(i) && nodes.mass(i) > 0. ?
                       nodes.momentum(i) / nodes.mass(i) :
                       0.;
-    residual_with_damping.reinit(residual);
-    add_force(system, velocity, residual_with_damping);
-    residual_with_damping.compress(VectorOperation::add);
+    damping_force.reinit(residual);
+    add_force(system, velocity, damping_force);
+    damping_force.compress(VectorOperation::add);
+    residual_with_damping = damping_force;
     residual_with_damping.add(1., residual);
     residual_with_damping.update_ghost_values();
     return residual_with_damping;
+  }
+
+
+
+  template <int dim>
+  double
+  StiffnessDamping<dim>::explicit_dissipation(
+    const std::vector<double> &increment,
+    const unsigned int         n_owned) const
+  {
+    double dissipation = 0.;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      dissipation += damping_force.local_element(i) * increment[i];
+    return dissipation;
   }
 
 

@@ -257,6 +257,30 @@ namespace impm
 
 
 
+  double
+  plastic_dissipation_density(const ConstitutiveUpdate &update)
+  {
+    if (!update.plastic)
+      return 0.;
+    double dissipation = 0.;
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        Tensor<1, 3> direction;
+        for (unsigned int i = 0; i < 3; ++i)
+          direction[i] = update.trial_eigenvectors[i][a];
+        const double stress =
+          direction * (update.kirchhoff_stress * direction);
+        const double stretch =
+          direction * (update.elastic_left_cauchy_green * direction);
+        dissipation += stress * 0.5 *
+                       (std::log(update.trial_eigenvalues[a]) -
+                        std::log(stretch));
+      }
+    return dissipation;
+  }
+
+
+
   std::array<double, 3>
   decompose_trial_strain(const Tensor<2, 3>          &dF,
                          const SymmetricTensor<2, 3> &be_n,

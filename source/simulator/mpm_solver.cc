@@ -120,6 +120,8 @@ namespace impm
       return false;
     });
     problem.check_tangents(settings.testing.check_tangent);
+    if (couplings.keep_energy_balance())
+      problem.keep_energy_balance();
     // A signal abandons the load step in progress at its next Newton
     // iteration, on every process together (MPMSolver::stop_for_signal()).
     newton_solver.set_interruption([this]() {
@@ -523,6 +525,10 @@ namespace impm
   void
   MPMSolver<dim>::accept_load_step(StepRecord &record)
   {
+    if (couplings.keep_energy_balance())
+      couplings.account_step_energy(system,
+                                    problem.increment(),
+                                    problem.work_of_loads_and_faces());
     for (const auto &coupling : couplings.list())
       coupling->accept(material_points, system, problem.increment());
     const auto reactions      = problem.reactions();

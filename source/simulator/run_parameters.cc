@@ -1,5 +1,5 @@
 // declare_run_parameters(): every module declares the entries it reads.
-#include <impm/coupling/coupling.h>
+#include <impm/coupling/couplings.h>
 #include <impm/io/shared_libraries.h>
 #include <impm/postprocess/postprocessor.h>
 #include <impm/simulator/material_test.h>

@@ -48,6 +48,26 @@ namespace impm
       coupling->begin_attempt(material_points, system, span);
     displacement_increment        = 0.;
     const bool start_residual_set = set_start_residual(span.start);
+    has_start_residual            = keeps_energy && start_residual_set;
+    has_start_external_force =
+      keeps_energy && span.start != span.target &&
+      assembler.external_force_scales_with_load_factor();
+    if (has_start_residual)
+      {
+        start_residual.reinit(internal_force, true);
+        start_residual = internal_force;
+      }
+    if (has_start_external_force)
+      {
+        start_external_force.reinit(external_force, true);
+        if (start_residual_set)
+          start_external_force = external_force;
+        else
+          {
+            TimerOutput::Scope scope(timer, "assembly");
+            assembler.assemble_external_force(span.start, start_external_force);
+          }
+      }
     grid.apply_prescribed_increment(span.target - span.start,
                                     displacement_increment);
     warn_of_faces_without_material(span);
@@ -149,6 +169,41 @@ namespace impm
         coupling->set_start_residual(internal_force);
     internal_force.zero_out_ghost_values();
     return true;
+  }
+
+
+
+  template <int dim>
+  double
+  LoadStepProblem<dim>::work_of_loads_and_faces() const
+  {
+    double work = 0.;
+    for (unsigned int i = 0; i < displacement_increment.locally_owned_size();
+         ++i)
+      if (const double du = displacement_increment.local_element(i); du != 0.)
+        {
+          const double end_load = external_force.local_element(i);
+          work +=
+            0.5 *
+            ((has_start_external_force ? start_external_force.local_element(i) :
+                                         end_load) +
+             end_load) *
+            du;
+          // A DoF outside the system that moves is moved by its face,
+          // whose force on the material is the residual there.
+          if (system.system_index(i) == numbers::invalid_dof_index)
+            {
+              const double end_force =
+                internal_force.local_element(i) - end_load;
+              work += 0.5 *
+                      ((has_start_residual ? start_residual.local_element(i) :
+                                             end_force) +
+                       end_force) *
+                      du;
+            }
+        }
+    return Utilities::MPI::sum(work,
+                               grid.get_triangulation().get_communicator());
   }
 
 

@@ -99,6 +99,15 @@ namespace impm
                const NodalVector         &increment,
                NodalVector               &internal_force) override;
 
+    /** @brief The energy the penalty took out of the converged step with
+     *  increment @p increment: half its forces times the increment (they
+     *  grow with the increment's jumps from zero in every step, as a
+     *  spring charged and let go). Collective. */
+    void
+    add_step_energy(const LoadStepSystem<dim> &system,
+                    const NodalVector         &increment,
+                    StepEnergy                &energy) override;
+
     /** @brief The penalty matrices: constant over the step. */
     bool
     add_constant_matrix(const LoadStepSystem<dim>      &system,

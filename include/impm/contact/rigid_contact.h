@@ -15,6 +15,7 @@
 #include <impm/points/material_points.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -225,6 +226,18 @@ namespace impm
     add_start_forces(const LoadStepSystem<dim> &system,
                      const NodalVector         &increment,
                      NodalVector               &internal_force) override;
+
+    /**
+     * @brief The contact's work on the material over the converged step
+     * with increment @p increment: at each face, the mean of its force at
+     * the step's start (as add_start_forces() finds it) and at its end,
+     * times the face's displacement (the trapezoidal rule: exact for the
+     * penalty's linear spring, an estimate for the friction's slip).
+     */
+    void
+    add_step_energy(const LoadStepSystem<dim> &system,
+                    const NodalVector         &increment,
+                    StepEnergy                &energy) override;
 
     /** @brief An unknown of the bodies: a force-driven component. */
     struct Unknown
@@ -455,6 +468,13 @@ namespace impm
       Tensor<1, dim> normal_force, friction_force, traction;
       Tensor<2, dim> force_derivative;
     };
+
+    /** @brief Call @p visit(index, probe) with a copy of each probe
+     *  evaluated where the step starts (the bodies at their start pose, the
+     *  faces unmoved); the probes and the poses are left as they are. */
+    void
+    visit_start_probes(
+      const std::function<void(unsigned int, const Probe &)> &visit);
 
     /** @brief Evaluate @p probe at the face centre @p position. */
     void

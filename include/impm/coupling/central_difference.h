@@ -137,10 +137,15 @@ namespace impm
    * increment @f$\Delta t\,v_I@f$ with the nodes'
    * new velocity (USL) or that of the updated points' momentum (MUSL, the
    * integrator's order), on the local DoFs of the system (zero
-   * elsewhere). Collective.
+   * elsewhere). Returns the energy the local and mass damping took out
+   * over the step at the first @p n_owned DoFs (this process's), minus
+   * their forces times the increment, and sets @p kinetic, the nodes'
+   * kinetic energy there with the start's velocity and with the velocity
+   * of the increment.
+   * Collective.
    */
   template <int dim>
-  void
+  double
   central_difference_step(const NodalMomentum<dim>  &nodes,
                           const NodalVector         &r,
                           const double               time_step,
@@ -150,7 +155,9 @@ namespace impm
                           std::vector<double>       &increment,
                           std::vector<double>       &velocities,
                           std::vector<double>       &accelerations,
-                          std::vector<double>       &velocity_gradients);
+                          std::vector<double>       &velocity_gradients,
+                          const unsigned int         n_owned,
+                          NodalKineticEnergy        &kinetic);
 } // namespace impm
 
 #endif

@@ -16,6 +16,7 @@
 #include <impm/core/parameters.h>
 #include <impm/coupling/coupling_inputs.h>
 #include <impm/coupling/point_gradients.h>
+#include <impm/coupling/step_energy.h>
 #include <impm/coupling/step_measure.h>
 #include <impm/coupling/step_refusal.h>
 #include <impm/grid/background_grid.h>
@@ -448,6 +449,32 @@ namespace impm
                 const LoadStepSystem<dim> &system,
                 const NodalVector         &increment) const;
 
+    /** @brief Add this process's share of the energy its forces moved over
+     *  the converged step with displacement increment @p increment
+     *  (ghosted; the increments of the points in @p system), by the rule in
+     *  time those forces follow: their work on the material
+     *  (StepEnergy::external_work: springs, dashpots, contacts, a shaken
+     *  base) or what a numerical term took out (StepEnergy::dissipated).
+     *  Called before accept() and only in a scene that keeps an energy
+     *  balance. Nothing by default, right only for a coupling with no
+     *  forces of its own: one that adds forces must say what they do. */
+    virtual void
+    add_step_energy(const LoadStepSystem<dim> &system,
+                    const NodalVector         &increment,
+                    StepEnergy                &energy);
+
+    /** @brief Whether it keeps the scene's energy balance (inertia; none
+     *  by default): then take_step_energy() tells it what the others
+     *  moved in each converged step. */
+    virtual bool
+    keeps_energy_balance() const;
+
+    /** @brief The converged step's energy from the loads, the faces and
+     *  the other couplings, summed over the processes, before accept()
+     *  (a keeper of the energy balance only). */
+    virtual void
+    take_step_energy(const StepEnergy &energy);
+
     /** @brief The force of the material on what this coupling stands for
      *  (bodies, springs) at the last accepted step, which carries part of
      *  the load (zero by default). */
@@ -476,103 +503,6 @@ namespace impm
   template <int dim>
   using CouplingList = PluginList<Coupling<dim>, const CouplingInputs<dim> &>;
 
-  /**
-   * @brief The scene's couplings, in the order of their names, and the loops
-   * over them that the load-step code calls.
-   */
-  template <int dim>
-  class Couplings
-  {
-  public:
-    /** @brief Declare the subsections of the registered couplings that
-     *  declare parameters. */
-    static void
-    declare_parameters(ParameterHandler &prm);
-
-    /** @brief Create the couplings the scene asks for. */
-    explicit Couplings(const CouplingInputs<dim> &inputs);
-
-    /** @brief The couplings. */
-    const std::vector<std::unique_ptr<Coupling<dim>>> &
-    list() const
-    {
-      return couplings;
-    }
-
-    /** @brief The coupling of type @p Type, or nullptr. */
-    template <typename Type>
-    const Type *
-    find() const
-    {
-      for (const auto &coupling : couplings)
-        if (const auto *found = dynamic_cast<const Type *>(coupling.get()))
-          return found;
-      return nullptr;
-    }
-
-    /** @brief The coupling that sets the points' volumes, or nullptr. */
-    Coupling<dim> *
-    volume_coupling() const
-    {
-      return sets_volumes;
-    }
-
-    /** @brief The fields all couplings store per point. */
-    PointFields
-    point_fields() const;
-
-    /** @brief Whether any coupling needs a direct linear solver. */
-    bool
-    need_direct_solver() const;
-
-    /** @brief The total number of unknowns shared by all processes. */
-    unsigned int
-    n_global_unknowns() const
-    {
-      return n_global;
-    }
-
-    /**
-     * @brief The setup of a load step's system (LoadStepSystem::number(),
-     * the couplings' prepare() and setup(), LoadStepSystem::make_pattern()).
-     * Returns whether the matrix of the step before was kept. Collective.
-     */
-    bool
-    set_up_system(const MaterialPoints<dim> &material_points,
-                  LoadStepSystem<dim>       &system);
-
-    /** @brief The coupling that finds each step's increment itself
-     *  (Coupling::solves_step(): explicit time integration), or null. */
-    Coupling<dim> *
-    step_solver() const;
-
-    /** @brief Sum of every coupling's force_from_material(). */
-    Tensor<1, dim>
-    force_from_material() const;
-
-    /** @brief Whether any coupling's state changed. Collective. */
-    bool
-    state_changed() const;
-
-    /** @brief The global unknowns' residuals, coupling after coupling.
-     *  Collective. */
-    Vector<double>
-    global_residuals() const;
-
-    /** @brief Add @p correction to the global unknowns, coupling after
-     *  coupling. */
-    void
-    add_to_global_unknowns(const Vector<double> &correction) const;
-
-    /** @brief Why global unknown @p j cannot be solved for. */
-    std::string
-    unbalanced_unknown(const unsigned int j) const;
-
-  private:
-    std::vector<std::unique_ptr<Coupling<dim>>> couplings;
-    Coupling<dim>                              *sets_volumes = nullptr;
-    unsigned int                                n_global     = 0;
-  };
 } // namespace impm
 
 /**

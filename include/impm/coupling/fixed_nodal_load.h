@@ -72,6 +72,18 @@ namespace impm
           internal_force.local_element(i) -= load.local_element(i);
     }
 
+    /** @brief Its work over the displacement @p increment at this
+     *  process's owned DoFs of the system. */
+    double
+    work(const NodalVector &increment) const
+    {
+      double sum = 0.;
+      for (unsigned int i = 0; i < load.locally_owned_size(); ++i)
+        if (in_system[i])
+          sum += load.local_element(i) * increment.local_element(i);
+      return sum;
+    }
+
     /** @brief Its norm over the system's DoFs. */
     double
     norm() const

@@ -104,6 +104,14 @@ namespace impm
                const double       time_step,
                NodalVector       &force) const;
 
+    /**
+     * @brief Half its force times the increment @p increment at this
+     * process's owned DoFs: the energy it takes out of a step (it grows
+     * from zero with the step's increment). Collective.
+     */
+    double
+    dissipation(const NodalVector &increment, const double time_step) const;
+
     /** @brief Add @f$k_m c_1 G@f$ to @p matrix (before its compress()). */
     void
     add_matrix(const LoadStepSystem<dim>      &system,

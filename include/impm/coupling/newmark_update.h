@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <impm/coupling/nodal_momentum.h>
+#include <impm/coupling/step_energy.h>
 #include <impm/coupling/time_integrator.h>
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
@@ -33,9 +34,12 @@ namespace impm
    * @param[out] velocities, accelerations By step index and axis.
    * @param[out] velocity_gradients With APIC, by step index and dim x dim
    *   (row-major); untouched otherwise.
+   * @return The nodes' kinetic energy with the start's and the new
+   *   velocity on the first @p n_owned (this process's) DoFs, with the
+   *   lumped mass or the consistent one (through this process's points).
    */
   template <int dim>
-  void
+  NodalKineticEnergy
   newmark_point_update(const NodalMomentum<dim>  &nodes,
                        const NodalVector         &increment,
                        const double               time_step,
@@ -44,7 +48,45 @@ namespace impm
                        const PointSteps<dim>     &steps,
                        std::vector<double>       &velocities,
                        std::vector<double>       &accelerations,
-                       std::vector<double>       &velocity_gradients);
+                       std::vector<double>       &velocity_gradients,
+                       const unsigned int         n_owned);
+
+  /** @brief What add_newmark_forces() added, on this process's DoFs. */
+  template <int dim>
+  struct NewmarkForceSums
+  {
+    /** The squared norm of the forces. */
+    double norm_squared = 0.;
+    /** Their sum per axis. */
+    Tensor<1, dim> force;
+    /** The energy the mass damping took out: the mean of its start's
+     *  and end's force times the increment. */
+    double damping_dissipation = 0.;
+  };
+
+  /**
+   * @brief Add the inertial and mass damping force of an implicit step
+   * (Newmark or generalised-alpha, Inertia) at the owned DoFs of the system
+   * to @p internal_force, for the increment @p increment: @f$k_m M
+   * a^{n+1} + k_a q + k_r r^n@f$ with @f$M a^{n+1} = c_1 M \Delta u - c_2
+   * p - c_3 q@f$ (@p nodes' momentum p and mass times acceleration q;
+   * @f$M\Delta u@f$ from @p mass_times_increment, the consistent matrix's
+   * product by owned DoF, with the integrator's share of the lumped mass,
+   * or the lumped mass where it is empty), and @f$r^n@f$ the start's
+   * residual @p start_residual (empty: none), plus the mass damping's
+   * @f$lpha_R (p + \Delta t((1-\gamma) q + \gamma M a^{n+1}) + k_r
+   * p)@f$.
+   */
+  template <int dim>
+  NewmarkForceSums<dim>
+  add_newmark_forces(const NodalMomentum<dim>  &nodes,
+                     const TimeIntegrator      &integrator,
+                     const double               time_step,
+                     const NodalVector         &increment,
+                     const std::vector<double> &mass_times_increment,
+                     const std::vector<double> &start_residual,
+                     const BackgroundGrid<dim> &grid,
+                     NodalVector               &internal_force);
 } // namespace impm
 
 #endif

@@ -114,6 +114,16 @@ namespace impm
                     const LoadStepSystem<dim> &system,
                     const NodalVector         &residual);
 
+    /**
+     * @brief The energy the last damped_residual()'s damping force takes
+     * out over the explicit increment @p increment (by local DoF): that
+     * force times the increment at the first @p n_owned (this process's)
+     * DoFs.
+     */
+    double
+    explicit_dissipation(const std::vector<double> &increment,
+                         const unsigned int         n_owned) const;
+
   private:
     /** @brief Add @f$\beta_R K_e v@f$ of the nodal velocity @p velocity
      *  (local DoFs) to @p force (local DoFs, before a compress()); returns
@@ -130,8 +140,9 @@ namespace impm
     const double gamma_over_beta, k_r;
     /** Scratch: the nodal velocity of a force. */
     std::vector<double> velocity;
-    /** The explicit integrators' damped residual. */
-    NodalVector residual_with_damping;
+    /** The explicit integrators' damped residual and its damping
+     *  force. */
+    NodalVector residual_with_damping, damping_force;
     /** Per point (by step index): @f$\beta_R V^n (\lambda, \mu)@f$ of
      *  the step (begin_step()). */
     std::vector<std::pair<double, double>> scaled_moduli;

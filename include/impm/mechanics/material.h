@@ -76,6 +76,16 @@ namespace impm
   elastic_energy_density(const ConstitutiveUpdate &update);
 
   /**
+   * @brief The energy per unit reference volume a plastic update's return
+   * map dissipated: @f$\tau^{n+1} : (\varepsilon^{tr}_e -
+   * \varepsilon^{n+1}_e)@f$ in the trial's principal frame (the
+   * exponential map's return is coaxial), the backward Euler rule's
+   * plastic work; zero for an elastic update.
+   */
+  double
+  plastic_dissipation_density(const ConstitutiveUpdate &update);
+
+  /**
    * @brief The spectral decomposition of the trial elastic left
    * Cauchy-Green tensor @f$b^e_{tr} = \Delta F\, b^e_n\, \Delta F^T@f$
    * into @p result's trial eigenvalues and eigenvectors (descending).

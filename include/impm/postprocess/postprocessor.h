@@ -6,7 +6,7 @@
 
 #include <impm/base/plugin_list.h>
 #include <impm/core/parameters.h>
-#include <impm/coupling/coupling.h>
+#include <impm/coupling/couplings.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/run_state.h>
 #include <impm/points/material_points.h>

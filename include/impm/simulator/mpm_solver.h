@@ -9,7 +9,7 @@
 #include <impm/assembly/assembler.h>
 #include <impm/core/effects.h>
 #include <impm/core/parameters.h>
-#include <impm/coupling/coupling.h>
+#include <impm/coupling/couplings.h>
 #include <impm/grid/background_grid.h>
 #include <impm/io/checkpoint.h>
 #include <impm/io/run_state.h>

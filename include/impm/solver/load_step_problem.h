@@ -9,7 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <impm/assembly/assembler.h>
-#include <impm/coupling/coupling.h>
+#include <impm/coupling/couplings.h>
 #include <impm/grid/background_grid.h>
 #include <impm/solver/linear_solver.h>
 #include <impm/solver/newton_solver.h>
@@ -198,7 +198,37 @@ namespace impm
                                       explicit_inertial_force);
     }
 
+    /** @brief Keep, from the next begin() on, what work_of_loads_and_faces()
+     *  needs (the start's external force and residual where they differ
+     *  from the end's): a scene that keeps an energy balance. */
+    void
+    keep_energy_balance()
+    {
+      keeps_energy = true;
+    }
+
+    /**
+     * @brief The work done on the material over the converged step by the
+     * loads and the prescribed faces, summed over the processes: the
+     * increment times the mean of the start's and the end's external force
+     * at every DoF, and at the DoFs a face moves, times the mean of the
+     * start's and the end's residual (the face's force on the material,
+     * internal with the couplings' minus external force). After
+     * keep_energy_balance(); the end's forces stand for the start's where
+     * the start's were not kept (a load that does not change in the step;
+     * a face the scene does not move). Collective.
+     */
+    double
+    work_of_loads_and_faces() const;
+
   private:
+    /** Whether begin() keeps the start's forces (keep_energy_balance()). */
+    bool keeps_energy = false;
+    /** The external force and the residual of the step's start (kept with
+     *  the energy balance, where they may differ from the end's). */
+    NodalVector start_external_force, start_residual;
+    bool        has_start_external_force = false, has_start_residual = false;
+
     /** The inertial force of the last explicit step (zero otherwise). */
     Tensor<1, dim> explicit_inertial_force;
 

@@ -5,7 +5,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <impm/coupling/coupling.h>
+#include <impm/coupling/couplings.h>
 #include <impm/grid/background_grid.h>
 #include <impm/system/load_step_system.h>
 

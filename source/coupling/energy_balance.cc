@@ -1,0 +1,249 @@
+// The energy balance of a scene with inertia: the points' energies and
+// stress work, the work from outside, the check after every step.
+#include <deal.II/base/tensor.h>
+
+#include <impm/base/errors.h>
+#include <impm/core/point_properties.h>
+#include <impm/coupling/energy_balance.h>
+#include <impm/mechanics/material.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+namespace impm
+{
+  template <int dim>
+  void
+  EnergyBalance<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Energy balance tolerance",
+      "0.05",
+      Patterns::Double(0.),
+      "The largest error of the energy balance, kinetic plus elastic plus "
+      "dissipated energy against the initial energy plus the work from "
+      "outside (loads, moving faces, springs, dashpots, contacts, a shaken "
+      "base), as a fraction of the run's largest energy, before a line "
+      "reports it (again each time it has doubled). The error is written "
+      "after every step (steps.csv's energy_error); it measures the time "
+      "integration (the kinetic energy the transfer between points and "
+      "nodes takes out is written apart, transfer_loss).");
+  }
+
+
+
+  template <int dim>
+  EnergyBalance<dim>::EnergyBalance(const ParameterHandler &prm,
+                                    const MPI_Comm          communicator)
+    : tolerance(prm.get_double("Energy balance tolerance"))
+    , communicator(communicator)
+  {}
+
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::start(const MaterialPoints<dim> &material_points,
+                            const PointSteps<dim>     &steps)
+  {
+    if (started)
+      return;
+    const unsigned int velocity_first =
+      material_points.layout().coupling_field("velocity");
+    double local_kinetic = 0., local_elastic = 0.;
+    for (const auto &point : material_points.particles())
+      {
+        const auto            properties = point.get_properties();
+        const PointState<dim> state(properties);
+        for (unsigned int i = 0; i < dim; ++i)
+          local_kinetic += 0.5 * state.mass() * properties[velocity_first + i] *
+                           properties[velocity_first + i];
+        ConstitutiveUpdate update;
+        update.kirchhoff_stress          = state.kirchhoff_stress();
+        update.elastic_left_cauchy_green = state.elastic_left_cauchy_green();
+        local_elastic +=
+          steps.of(point).initial_volume * elastic_energy_density(update);
+      }
+    initial_kinetic = Utilities::MPI::sum(local_kinetic, communicator);
+    initial_elastic = Utilities::MPI::sum(local_elastic, communicator);
+    kinetic         = initial_kinetic;
+    elastic         = initial_elastic;
+    largest_energy  = std::abs(initial_kinetic + initial_elastic);
+    started         = true;
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::take(const StepEnergy &energy)
+  {
+    step_energy = energy;
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::accept(const MaterialPoints<dim> &material_points,
+                             const PointSteps<dim>     &steps,
+                             const std::vector<double> &velocities,
+                             const double local_damping_dissipation,
+                             const NodalKineticEnergy &local_nodal_kinetic,
+                             const double              time)
+  {
+    double local_kinetic = 0., local_elastic = 0., local_plastic = 0.;
+    for (const auto &point : material_points.particles())
+      {
+        const unsigned int    p    = steps.index_of(point);
+        const PointStep<dim> &step = steps[p];
+        const PointState<dim> state(point.get_properties());
+        local_elastic +=
+          step.initial_volume * elastic_energy_density(step.update);
+        if (step.update.plastic)
+          local_plastic +=
+            step.initial_volume * plastic_dissipation_density(step.update);
+        for (unsigned int i = 0; i < dim; ++i)
+          local_kinetic += 0.5 * state.mass() * velocities[p * dim + i] *
+                           velocities[p * dim + i];
+      }
+    const double start_kinetic = kinetic;
+    kinetic = Utilities::MPI::sum(local_kinetic, communicator);
+    transfer_loss +=
+      start_kinetic - kinetic +
+      Utilities::MPI::sum(local_nodal_kinetic.end - local_nodal_kinetic.start,
+                          communicator);
+    elastic = Utilities::MPI::sum(local_elastic, communicator);
+    plastic_dissipation += Utilities::MPI::sum(local_plastic, communicator);
+    other_dissipation +=
+      Utilities::MPI::sum(local_damping_dissipation, communicator) +
+      step_energy.dissipated;
+    external_work += step_energy.external_work;
+    step_energy = StepEnergy();
+    const double dissipated = plastic_dissipation + other_dissipation;
+    largest_energy     = std::max({largest_energy,
+                                   kinetic,
+                                   std::abs(elastic),
+                                   std::abs(external_work),
+                                   std::abs(dissipated),
+                                   std::abs(transfer_loss)});
+    const double error = std::abs(relative_error());
+    if (error > tolerance && error >= 2. * reported_error)
+      {
+        reported_error = error;
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          std::cerr << "Warning: at t = " << time
+                    << " s the energy balance is off by " << 100. * error
+                    << " % of the run's largest energy (kinetic + elastic + "
+                       "dissipated against the initial energy + the work "
+                       "from outside; 'Energy balance tolerance' "
+                    << 100. * tolerance
+                    << " %): the time step, the transfer between points "
+                       "and nodes, or an effect whose energy is not "
+                       "accounted."
+                    << std::endl;
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  EnergyBalance<dim>::relative_error() const
+  {
+    if (!(largest_energy > 0.))
+      return 0.;
+    return ((kinetic - initial_kinetic) + (elastic - initial_elastic) +
+            plastic_dissipation + other_dissipation + transfer_loss -
+            external_work) /
+           largest_energy;
+  }
+
+
+
+  template <int dim>
+  std::vector<std::string>
+  EnergyBalance<dim>::columns()
+  {
+    return {"kinetic_energy",
+            "strain_energy",
+            "total_energy",
+            "external_work",
+            "dissipated_energy",
+            "transfer_loss",
+            "energy_error"};
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::add_measures(std::vector<StepMeasure> &measures) const
+  {
+    measures.push_back({"kinetic_energy", "Ek", kinetic, MeasureKind::energy});
+    measures.push_back({"strain_energy", "Es", elastic, MeasureKind::energy});
+    measures.push_back(
+      {"total_energy", "E", kinetic + elastic, MeasureKind::energy});
+    measures.push_back(
+      {"external_work", "W", external_work, MeasureKind::energy});
+    measures.push_back(
+      {"dissipated_energy",
+       "D",
+       plastic_dissipation + other_dissipation,
+       MeasureKind::energy});
+    measures.push_back(
+      {"transfer_loss", "T", transfer_loss, MeasureKind::energy});
+    measures.push_back(
+      {"energy_error", "dE", relative_error(), MeasureKind::number});
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::save(RunState &state) const
+  {
+    state.set("energy balance",
+              std::vector<double>{initial_kinetic,
+                                  initial_elastic,
+                                  kinetic,
+                                  elastic,
+                                  plastic_dissipation,
+                                  other_dissipation,
+                                  external_work,
+                                  transfer_loss,
+                                  largest_energy,
+                                  reported_error});
+  }
+
+
+
+  template <int dim>
+  void
+  EnergyBalance<dim>::load(const RunState &state)
+  {
+    const std::vector<double> values = state.get_list("energy balance");
+    if (values.size() != 10)
+      throw InputError("The checkpoint's 'energy balance' has " +
+                       std::to_string(values.size()) +
+                       " values, not 10: a damaged checkpoint.");
+    initial_kinetic   = values[0];
+    initial_elastic   = values[1];
+    kinetic           = values[2];
+    elastic           = values[3];
+    plastic_dissipation = values[4];
+    other_dissipation = values[5];
+    external_work     = values[6];
+    transfer_loss     = values[7];
+    largest_energy    = values[8];
+    reported_error    = values[9];
+    started           = true;
+  }
+
+
+
+  template class EnergyBalance<2>;
+  template class EnergyBalance<3>;
+} // namespace impm
