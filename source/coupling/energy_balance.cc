@@ -1,7 +1,5 @@
 // The energy balance of a scene with inertia: the points' energies and
-// stress work, the work from outside, the check after every step.
-#include <deal.II/base/tensor.h>
-
+// dissipation, the work from outside, the check after every step.
 #include <impm/base/errors.h>
 #include <impm/core/point_properties.h>
 #include <impm/coupling/energy_balance.h>
@@ -10,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <sstream>
+#include <string>
 
 namespace impm
 {
