@@ -92,6 +92,26 @@ def damped_bar(rows):
     claim(error < 1e-3, 'damped bar: balance error at most %.1e' % error)
 
 
+def stiff_damped_bar(rows):
+    # tests/vibrating_bar.prm with stiffness damping beta = 0.05 s: the
+    # first mode (omega = pi c / 2L = 0.2 pi 1/s) is damped at the ratio
+    # beta omega / 2, its energy as exp(-beta omega^2 t); the viscous
+    # stress's dissipation is all that leaves (the first step's
+    # acceleration once left its force of the initial velocity out: 2e-3).
+    e0 = 0.0625
+    last = rows[-1]
+    t = value(last, 'time')
+    omega = math.pi * 10. / 50.
+    ratio = value(last, 'total_energy') / e0
+    expected = math.exp(-0.05 * omega**2 * t)
+    claim(abs(ratio / expected - 1.) < 1e-2,
+          'stiffness-damped bar: E(%g s)/E0 = %.5f against exp(-beta '
+          'omega^2 t) = %.5f' % (t, ratio, expected))
+    error = largest(rows, 'energy_error')
+    claim(error < 1e-3,
+          'stiffness-damped bar: balance error at most %.1e' % error)
+
+
 def pulled_bar(rows):
     # tests/energy_balance_pulled_bar.prm: the face x+ moves u(t) = 0.1 (1 -
     # cos(pi t / 5)) / 2 m, v = 0.01 pi sin(pi t / 5); until the wave it
@@ -195,6 +215,7 @@ CASES = {
     'plastic_collapse': plastic_collapse,
     'free_fall': free_fall,
     'damped_bar': damped_bar,
+    'stiff_damped_bar': stiff_damped_bar,
     'pulled_bar': pulled_bar,
     'absorbed_pulse': absorbed_pulse,
     'explicit_bar': explicit_bar,

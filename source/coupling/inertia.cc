@@ -70,8 +70,8 @@ namespace impm
      * (StiffnessDamping), weighed alike.
      *
      * The first step's nodal acceleration is that of the balance at the
-     * start, @f$M a^0 = f_{ext}(0) - f_{int}(0) - \alpha_R M v^0@f$ (a
-     * body under gravity at once starts falling at g), not the points' 0.
+     * start, @f$M a^0 = f_{ext}(0) - f_{int}(0)@f$ less the damping of the
+     * initial velocity (a body under gravity at once falls at g).
      *
      * The explicit integrators (`explicit MUSL`, `explicit USL`) are the
      * central difference rule with the lumped mass
@@ -326,7 +326,7 @@ namespace impm
 
       /** @brief Keep the start's residual (generalised-alpha), and on the
        *  first step set the nodes' mass times acceleration to the start's
-       *  balance, @f$M a^0 = -r^0 - \alpha_R M v^0@f$. */
+       *  balance with the damping (set_start_acceleration()). */
       void
       set_start_residual(const NodalVector &internal_minus_external) override
       {
@@ -367,12 +367,11 @@ namespace impm
                                     0.;
           }
         if (!started)
-          for (unsigned int i = 0; i < nodes.n_local(); ++i)
-            if (nodes.in_system(i) && nodes.mass(i) > 0.)
-              nodes.set_mass_acceleration(
-                i,
-                -internal_minus_external.local_element(i) -
-                  integrator.mass_damping * nodes.momentum(i));
+          set_start_acceleration(nodes,
+                                 integrator,
+                                 stiffness_damping,
+                                 *current_system,
+                                 internal_minus_external);
       }
 
       /** @brief The mass term of the matrix on the diagonal of the owned

@@ -133,6 +133,27 @@ namespace impm
 
 
   template <int dim>
+  void
+  set_start_acceleration(NodalMomentum<dim>        &nodes,
+                         const TimeIntegrator      &integrator,
+                         StiffnessDamping<dim>     &damping,
+                         const LoadStepSystem<dim> &system,
+                         const NodalVector         &residual)
+  {
+    const NodalVector &damped =
+      damping.active() ? damping.damped_residual(nodes, system, residual) :
+                         residual;
+    for (unsigned int i = 0; i < nodes.n_local(); ++i)
+      if (nodes.in_system(i) && nodes.mass(i) > 0.)
+        nodes.set_mass_acceleration(i,
+                                    -damped.local_element(i) -
+                                      integrator.mass_damping *
+                                        nodes.momentum(i));
+  }
+
+
+
+  template <int dim>
   NewmarkForceSums<dim>
   add_newmark_forces(const NodalMomentum<dim>  &nodes,
                      const TimeIntegrator      &integrator,
@@ -180,8 +201,7 @@ namespace impm
               // start's); generalised-alpha's k_r alpha p is the start's
               // weight, not a force of its own.
               sums.damping_dissipation +=
-                0.5 * ((1. - k_r) * integrator.mass_damping * p + damping) *
-                du;
+                0.5 * ((1. - k_r) * integrator.mass_damping * p + damping) * du;
             }
           internal_force.local_element(i) += force;
           sums.norm_squared += force * force;
@@ -214,6 +234,18 @@ namespace impm
                        std::vector<double> &,
                        std::vector<double> &,
                        const unsigned int);
+  template void
+  set_start_acceleration(NodalMomentum<2> &,
+                         const TimeIntegrator &,
+                         StiffnessDamping<2> &,
+                         const LoadStepSystem<2> &,
+                         const NodalVector &);
+  template void
+  set_start_acceleration(NodalMomentum<3> &,
+                         const TimeIntegrator &,
+                         StiffnessDamping<3> &,
+                         const LoadStepSystem<3> &,
+                         const NodalVector &);
   template NewmarkForceSums<2>
   add_newmark_forces(const NodalMomentum<2> &,
                      const TimeIntegrator &,

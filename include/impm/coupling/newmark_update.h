@@ -5,6 +5,7 @@
 
 #include <impm/coupling/nodal_momentum.h>
 #include <impm/coupling/step_energy.h>
+#include <impm/coupling/stiffness_damping.h>
 #include <impm/coupling/time_integrator.h>
 #include <impm/grid/background_grid.h>
 #include <impm/points/material_points.h>
@@ -50,6 +51,23 @@ namespace impm
                        std::vector<double>       &accelerations,
                        std::vector<double>       &velocity_gradients,
                        const unsigned int         n_owned);
+
+  /**
+   * @brief The first step's start acceleration from the balance at the
+   * start (the points carry none yet): @f$M a^0 = -r^0 - \alpha_R M v^0 -
+   * f_v(v^0)@f$ on the system's DoFs of @p nodes, with @p residual the
+   * start's residual (internal minus external force, ghosted), the mass
+   * damping of the integrator and the viscous force of @p damping (if
+   * active) at the initial nodal velocity. Collective with the stiffness
+   * damping.
+   */
+  template <int dim>
+  void
+  set_start_acceleration(NodalMomentum<dim>        &nodes,
+                         const TimeIntegrator      &integrator,
+                         StiffnessDamping<dim>     &damping,
+                         const LoadStepSystem<dim> &system,
+                         const NodalVector         &residual);
 
   /** @brief What add_newmark_forces() added, on this process's DoFs. */
   template <int dim>
