@@ -119,15 +119,15 @@ namespace impm
       Utilities::MPI::sum(local_damping_dissipation, communicator) +
       step_energy.dissipated;
     external_work += step_energy.external_work;
-    step_energy = StepEnergy();
+    step_energy             = StepEnergy();
     const double dissipated = plastic_dissipation + other_dissipation;
-    largest_energy     = std::max({largest_energy,
-                                   kinetic,
-                                   std::abs(elastic),
-                                   std::abs(external_work),
-                                   std::abs(dissipated),
-                                   std::abs(transfer_loss)});
-    const double error = std::abs(relative_error());
+    largest_energy          = std::max({largest_energy,
+                                        kinetic,
+                                        std::abs(elastic),
+                                        std::abs(external_work),
+                                        std::abs(dissipated),
+                                        std::abs(transfer_loss)});
+    const double error      = std::abs(relative_error());
     if (error > tolerance && error >= 2. * reported_error)
       {
         reported_error = error;
@@ -186,11 +186,10 @@ namespace impm
       {"total_energy", "E", kinetic + elastic, MeasureKind::energy});
     measures.push_back(
       {"external_work", "W", external_work, MeasureKind::energy});
-    measures.push_back(
-      {"dissipated_energy",
-       "D",
-       plastic_dissipation + other_dissipation,
-       MeasureKind::energy});
+    measures.push_back({"dissipated_energy",
+                        "D",
+                        plastic_dissipation + other_dissipation,
+                        MeasureKind::energy});
     measures.push_back(
       {"transfer_loss", "T", transfer_loss, MeasureKind::energy});
     measures.push_back(
@@ -227,17 +226,17 @@ namespace impm
       throw InputError("The checkpoint's 'energy balance' has " +
                        std::to_string(values.size()) +
                        " values, not 10: a damaged checkpoint.");
-    initial_kinetic   = values[0];
-    initial_elastic   = values[1];
-    kinetic           = values[2];
-    elastic           = values[3];
+    initial_kinetic     = values[0];
+    initial_elastic     = values[1];
+    kinetic             = values[2];
+    elastic             = values[3];
     plastic_dissipation = values[4];
-    other_dissipation = values[5];
-    external_work     = values[6];
-    transfer_loss     = values[7];
-    largest_energy    = values[8];
-    reported_error    = values[9];
-    started           = true;
+    other_dissipation   = values[5];
+    external_work       = values[6];
+    transfer_loss       = values[7];
+    largest_energy      = values[8];
+    reported_error      = values[9];
+    started             = true;
   }
 
 

@@ -268,13 +268,12 @@ namespace impm
         Tensor<1, 3> direction;
         for (unsigned int i = 0; i < 3; ++i)
           direction[i] = update.trial_eigenvectors[i][a];
-        const double stress =
-          direction * (update.kirchhoff_stress * direction);
+        const double stress = direction * (update.kirchhoff_stress * direction);
         const double stretch =
           direction * (update.elastic_left_cauchy_green * direction);
-        dissipation += stress * 0.5 *
-                       (std::log(update.trial_eigenvalues[a]) -
-                        std::log(stretch));
+        dissipation +=
+          stress * 0.5 *
+          (std::log(update.trial_eigenvalues[a]) - std::log(stretch));
       }
     return dissipation;
   }

@@ -131,8 +131,7 @@ namespace impm
     double kinetic = 0., elastic = 0.;
     /** Sums over the run: the points' plastic dissipation, the energy
      *  damping and numerical terms took out, the work from outside. */
-    double plastic_dissipation = 0., other_dissipation = 0.,
-           external_work = 0.;
+    double plastic_dissipation = 0., other_dissipation = 0., external_work = 0.;
     /** The sum over the run of the kinetic energy the transfer between
      *  points and nodes took out: at each step's start, the points' minus
      *  the nodes' (the mapping of the momentum, a projection, only loses),
