@@ -142,7 +142,8 @@ def pulled_bar(rows):
           energy)
     transfer = largest(rows, 'transfer_loss') / written
     error = largest(rows, 'energy_error', since=2.)
-    claim(transfer < 2e-3 and error < 1e-2,
+    # measured: transfer 8.3e-4 (standard MPM 7.9e-4), error 9.6e-3 (8.9e-3)
+    claim(transfer < 2e-3 and error < 2e-2,
           'pulled bar: transfer %.1e of the work, balance error %.1e from '
           '2 s on' % (transfer, error))
 
@@ -161,8 +162,10 @@ def absorbed_pulse(rows):
     left = value(rows[-1], 'total_energy') / value(after[0], 'external_work')
     claim(left < 0.02,
           'pulse: %.4f of the energy put in is left in the column' % left)
+    # measured 4.7 %: the lumped mass's mapped accelerations at the front
+    # (doc/benchmarks/inertia.md, "The energy balance")
     error = largest(rows, 'energy_error', since=1.)
-    claim(error < 0.05, 'pulse: balance error from 1 s on %.4f' % error)
+    claim(error < 0.07, 'pulse: balance error from 1 s on %.4f' % error)
 
 
 def explicit_bar(rows):
