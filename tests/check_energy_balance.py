@@ -168,6 +168,22 @@ def absorbed_pulse(rows):
     claim(error < 0.07, 'pulse: balance error from 1 s on %.4f' % error)
 
 
+def shaken_block(rows):
+    # tests/base_shaking_ramp.prm in 40 trapezoidal steps: a free block of
+    # m = 1000 kg/m^3 * 2 m * 1 m = 2000 kg per m on a base shaken with
+    # a_g = t: in the base's frame the load -m t moves it with v = -t^2/2,
+    # so the load's work is m t^4 / 8 = its kinetic energy.
+    worst = 0.
+    for r in rows:
+        exact = 2000. * value(r, 'time')**4 / 8.
+        worst = max(worst,
+                    abs(value(r, 'external_work') / exact - 1.),
+                    abs(value(r, 'kinetic_energy') / exact - 1.))
+    claim(worst < 1e-6,
+          'shaken block: the base load\'s work and the kinetic energy '
+          'm t^4 / 8 at every step (%.1e)' % worst)
+
+
 def explicit_bar(rows):
     # The vibrating bar in explicit MUSL steps: the central difference
     # rule's kinetic and elastic energy are half a step apart; its error
@@ -221,6 +237,7 @@ CASES = {
     'stiff_damped_bar': stiff_damped_bar,
     'pulled_bar': pulled_bar,
     'absorbed_pulse': absorbed_pulse,
+    'shaken_block': shaken_block,
     'explicit_bar': explicit_bar,
     'incline': incline,
 }

@@ -196,16 +196,15 @@ namespace impm
                     const LoadStepSystem<dim> &system,
                     const StepSpan            &span) override
       {
-        acceleration       = scale * history.value(span.end_time);
-        start_acceleration = scale * history.value(span.start_time);
-        masses.resize(system.point_steps.size());
+        acceleration = scale * history.value(span.end_time);
+        const Tensor<1, dim> start_acceleration =
+          scale * history.value(span.start_time);
         NodalVector &load       = nodal_load.reset(grid);
         NodalVector &start_load = start_nodal_load.reset(grid);
         for (const auto &point : material_points.particles())
           {
             const PointStep<dim> &step = system.point_steps.of(point);
             const double m = PointState<dim>(point.get_properties()).mass();
-            masses[system.point_steps.index_of(point)] = m;
             for (unsigned int v = 0; v < step.support.n_nodes; ++v)
               for (unsigned int i = 0; i < dim; ++i)
                 {
@@ -239,25 +238,16 @@ namespace impm
         nodal_load.subtract_from(internal_force);
       }
 
-      /** @brief The load's work on the material: each point's mass times
-       *  minus the mean of the start's and the end's acceleration (the
-       *  load is linear in time between them), times its displacement. */
+      /** @brief The load's work on the material: the mean of the start
+       *  time's and the end time's nodal load (linear in time between
+       *  them) times the increment. */
       void
-      add_step_energy(const LoadStepSystem<dim> &system,
-                      const NodalVector         &increment,
-                      StepEnergy                &energy) override
+      add_step_energy(const LoadStepSystem<dim> &,
+                      const NodalVector &increment,
+                      StepEnergy        &energy) override
       {
-        // The nodal load's weights (without GIMP's radial offset).
-        const Tensor<1, dim> mean = 0.5 * (acceleration + start_acceleration);
-        for (unsigned int p = 0; p < system.point_steps.size(); ++p)
-          {
-            const PointStep<dim> &step = system.point_steps[p];
-            for (unsigned int v = 0; v < step.support.n_nodes; ++v)
-              for (unsigned int i = 0; i < dim; ++i)
-                energy.external_work -=
-                  masses[p] * mean[i] * step.support.weights[v] *
-                  increment.local_element(step.dofs[v * dim + i]);
-          }
+        energy.external_work +=
+          0.5 * (nodal_load.work(increment) + start_nodal_load.work(increment));
       }
 
       /** @brief The size of the load. */
@@ -315,10 +305,6 @@ namespace impm
       const BackgroundGrid<dim> &grid;
       /** The base's acceleration at the step's end. */
       Tensor<1, dim> acceleration;
-      /** The base's acceleration at the step's start time. */
-      Tensor<1, dim> start_acceleration;
-      /** The points' masses, by step index. */
-      std::vector<double> masses;
       /** The nodal load -M a_g of the step's end and of its start. */
       FixedNodalLoad<dim> nodal_load, start_nodal_load;
     };

@@ -431,24 +431,11 @@ namespace impm
         double norm_squared = sums.norm_squared;
         force_on_material   = sums.force;
         damping_dissipation = sums.damping_dissipation;
-        // The mass's ghost penalty and the viscous stress (internal, not
-        // in force_on_material), summed apart for the energy they take out.
-        if (mass_ghost.active() || stiffness_damping.active())
-          {
-            damping_force.reinit(internal_force);
-            mass_ghost.add_forces(increment, time_step, damping_force);
-            if (stiffness_damping.active())
-              norm_squared += stiffness_damping.add_implicit_forces(
-                nodes, *current_system, increment, time_step, damping_force);
-            damping_force.compress(VectorOperation::add);
-            for (unsigned int i = 0; i < grid.n_locally_owned_dofs(); ++i)
-              {
-                internal_force.local_element(i) +=
-                  damping_force.local_element(i);
-                damping_dissipation +=
-                  damping_force.local_element(i) * increment.local_element(i);
-              }
-          }
+        mass_ghost.add_forces(increment, time_step, internal_force);
+        // The viscous stress: internal, not in force_on_material.
+        if (stiffness_damping.active())
+          norm_squared += stiffness_damping.add_implicit_forces(
+            nodes, *current_system, increment, time_step, internal_force);
         // The reference: the inertial force, floored by a millionth of its
         // momentum part M v / (beta dt) (a body moving freely has an
         // inertial force of round-off size, relative to which it stalls).
@@ -494,8 +481,14 @@ namespace impm
                                                  point_accelerations,
                                                  point_velocity_gradients,
                                                  grid.n_locally_owned_dofs());
-            // The mass ghost penalty's share is half its force times du.
-            damping_dissipation -= mass_ghost.dissipation(increment, time_step);
+            // The mass ghost penalty's and the viscous stress's energy, once
+            // a step (add_forces() kept the mass damping's).
+            damping_dissipation +=
+              mass_ghost.dissipation(increment, time_step) +
+              stiffness_damping.implicit_dissipation(nodes,
+                                                     system,
+                                                     increment,
+                                                     time_step);
           }
         energy_balance.accept(material_points,
                               steps,
@@ -577,12 +570,10 @@ namespace impm
       EnergyBalance<dim> energy_balance;
       /** The end time of the step's attempt; the energy the damping and
        *  the mass's ghost penalty took out at this process's owned DoFs in
-       *  the last add_forces() or explicit step; the nodes' kinetic energy
-       *  at its start and end there; the mass ghost penalty's and the
-       *  viscous stress's forces (implicit steps with either). */
+       *  the accepted step; the nodes' kinetic energy at its start and end
+       *  there. */
       double             end_time = 0., damping_dissipation = 0.;
       NodalKineticEnergy nodal_kinetic;
-      NodalVector        damping_force;
       /** The inertial force of the last add_forces() (this process's
        *  owned DoFs) and of the accepted step (all). */
       Tensor<1, dim> force_on_material, accepted_force;

@@ -227,6 +227,27 @@ namespace impm
 
   template <int dim>
   double
+  StiffnessDamping<dim>::implicit_dissipation(const NodalMomentum<dim>  &nodes,
+                                              const LoadStepSystem<dim> &system,
+                                              const NodalVector &increment,
+                                              const double       time_step)
+  {
+    if (!active())
+      return 0.;
+    NodalVector force;
+    force.reinit(increment);
+    add_implicit_forces(nodes, system, increment, time_step, force);
+    force.compress(VectorOperation::add);
+    double dissipation = 0.;
+    for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
+      dissipation += force.local_element(i) * increment.local_element(i);
+    return dissipation;
+  }
+
+
+
+  template <int dim>
+  double
   StiffnessDamping<dim>::explicit_dissipation(
     const std::vector<double> &increment,
     const unsigned int         n_owned) const

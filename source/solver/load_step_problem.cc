@@ -48,7 +48,9 @@ namespace impm
       coupling->begin_attempt(material_points, system, span);
     displacement_increment        = 0.;
     const bool start_residual_set = set_start_residual(span.start);
-    has_start_residual            = keeps_energy && start_residual_set;
+    // The start's residual matters only where a face moves in the step.
+    has_start_residual = keeps_energy && start_residual_set &&
+                         grid.moves_faces() && span.target != span.start;
     has_start_external_force =
       keeps_energy && span.start != span.target &&
       assembler.external_force_scales_with_load_factor();

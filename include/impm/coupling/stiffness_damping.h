@@ -115,6 +115,18 @@ namespace impm
                     const NodalVector         &residual);
 
     /**
+     * @brief Implicit integrators: the energy the damping force at the
+     * converged increment @p increment takes out (that force times the
+     * increment at this process's owned DoFs; 0 when inactive), once a
+     * step. Collective.
+     */
+    double
+    implicit_dissipation(const NodalMomentum<dim>  &nodes,
+                         const LoadStepSystem<dim> &system,
+                         const NodalVector         &increment,
+                         const double               time_step);
+
+    /**
      * @brief The energy the last damped_residual()'s damping force takes
      * out over the explicit increment @p increment (by local DoF): that
      * force times the increment at the first @p n_owned (this process's)
