@@ -259,6 +259,10 @@ namespace impm
       {
         time_step = span.time_step();
         end_time  = span.end_time;
+        held_increment =
+          integrator.is_explicit() && grid.moves_faces() ?
+            grid.local_prescribed_increment(span.target - span.start) :
+            std::vector<double>();
         if (!started)
           energy_balance.start(material_points, system.point_steps);
         nodes.map_points(material_points, system);
@@ -351,6 +355,7 @@ namespace impm
                                       point_accelerations,
                                       point_velocity_gradients,
                                       n_owned,
+                                      held_increment,
                                       nodal_kinetic);
             if (stiffness_damping.active())
               damping_dissipation +=
@@ -537,8 +542,9 @@ namespace impm
       /** The step's points and system (set in begin_attempt()). */
       const MaterialPoints<dim> *current_points = nullptr;
       const LoadStepSystem<dim> *current_system = nullptr;
-      /** The explicit step's increment on the local DoFs. */
-      std::vector<double> explicit_increment;
+      /** The explicit step's increment on the local DoFs, and that of
+       *  the DoFs a face moves (empty where none moves). */
+      std::vector<double> explicit_increment, held_increment;
       /** The points' new velocities, accelerations and (APIC) velocity
        *  gradients (by step index). */
       std::vector<double> point_velocities, point_accelerations,

@@ -270,6 +270,21 @@ namespace impm
 
 
   template <int dim>
+  std::vector<double>
+  BackgroundGrid<dim>::local_prescribed_increment(
+    const double load_increment) const
+  {
+    std::vector<double> increment(partitioner->locally_owned_size() +
+                                    partitioner->n_ghost_indices(),
+                                  0.);
+    for (const auto &[dof, displacement] : prescribed_dofs)
+      increment[dof] = load_increment * displacement;
+    return increment;
+  }
+
+
+
+  template <int dim>
   std::vector<unsigned int>
   BackgroundGrid<dim>::prescribed_faces_without_material(
     const std::vector<bool> &touched) const

@@ -137,11 +137,14 @@ namespace impm
    * increment @f$\Delta t\,v_I@f$ with the nodes'
    * new velocity (USL) or that of the updated points' momentum (MUSL, the
    * integrator's order), on the local DoFs of the system (zero
-   * elsewhere). Returns the energy the local and mass damping took out
+   * elsewhere). A DoF outside the system moves as its face does: it
+   * takes no change of velocity (FLIP), the velocity of its
+   * @p held_increment over the step (PIC; empty: every such DoF held) and
+   * no acceleration, as in an implicit step. Returns the energy the local
+   * and mass damping took out
    * over the step at the first @p n_owned DoFs (this process's), minus
    * their forces times the increment, and sets @p kinetic, the nodes'
-   * kinetic energy there with the start's velocity and with the velocity
-   * of the increment.
+   * kinetic energy there with the start's velocity and with the new one.
    * Collective.
    */
   template <int dim>
@@ -157,6 +160,7 @@ namespace impm
                           std::vector<double>       &accelerations,
                           std::vector<double>       &velocity_gradients,
                           const unsigned int         n_owned,
+                          const std::vector<double> &held_increment,
                           NodalKineticEnergy        &kinetic);
 } // namespace impm
 

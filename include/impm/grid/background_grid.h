@@ -215,6 +215,14 @@ namespace impm
                                NodalVector &increment) const;
 
     /**
+     * @brief The prescribed DoFs' share of a load increment
+     * @p load_increment on the local DoFs (owned, then ghosts; zero at
+     * every other DoF), as apply_prescribed_increment() sets them.
+     */
+    std::vector<double>
+    local_prescribed_increment(const double load_increment) const;
+
+    /**
      * @brief The faces (boundary ids) with a non-zero prescribed
      * displacement none of whose prescribed DoFs a point's support reaches
      * (@p touched: local DoFs, as LoadStepSystem::touched_dofs()): such a
