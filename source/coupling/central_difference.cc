@@ -172,8 +172,10 @@ namespace impm
                           std::vector<double>       &velocity_gradients,
                           const unsigned int         n_owned,
                           const std::vector<double> &held_increment,
+                          const bool                 first_step,
                           NodalKineticEnergy        &kinetic)
   {
+    const double velocity_step  = first_step ? 0.5 * time_step : time_step;
     kinetic                     = NodalKineticEnergy();
     const unsigned int  n_local = nodes.n_local();
     std::vector<double> acceleration(n_local), velocity_change(n_local),
@@ -195,7 +197,7 @@ namespace impm
                    0.;
         damping_force[i]   = local - integrator.mass_damping * m * v;
         acceleration[i]    = (force + damping_force[i]) / m;
-        velocity_change[i] = time_step * acceleration[i];
+        velocity_change[i] = velocity_step * acceleration[i];
         new_velocity[i]    = v + velocity_change[i];
         if (i < n_owned)
           kinetic.start += 0.5 * m * v * v;
@@ -283,6 +285,7 @@ namespace impm
                           std::vector<double> &,
                           const unsigned int,
                           const std::vector<double> &,
+                          const bool,
                           NodalKineticEnergy &);
   template double
   central_difference_step(const NodalMomentum<3> &,
@@ -297,6 +300,7 @@ namespace impm
                           std::vector<double> &,
                           const unsigned int,
                           const std::vector<double> &,
+                          const bool,
                           NodalKineticEnergy &);
   template std::string
   explicit_step_refusal(const double, const double, const CartesianGrid<2> &);

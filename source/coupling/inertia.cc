@@ -141,7 +141,8 @@ namespace impm
                      inputs.parameters.bodies)
         , inputs(inputs)
         , energy_balance(inputs.prm,
-                         grid.get_triangulation().get_communicator())
+                         grid.get_triangulation().get_communicator(),
+                         integrator.is_explicit())
       {
         if (!inputs.time.in_time())
           throw InputError("Inertia needs time: set 'Time/End time' above 0 "
@@ -356,6 +357,7 @@ namespace impm
                                       point_velocity_gradients,
                                       n_owned,
                                       held_increment,
+                                      !started,
                                       nodal_kinetic);
             if (stiffness_damping.active())
               damping_dissipation +=
@@ -500,6 +502,7 @@ namespace impm
                               point_velocities,
                               damping_dissipation,
                               nodal_kinetic,
+                              end_time - time_step,
                               end_time);
         material_points.set_coupling_field("velocity", steps, point_velocities);
         material_points.set_coupling_field("acceleration",

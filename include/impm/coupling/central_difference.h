@@ -140,7 +140,11 @@ namespace impm
    * elsewhere). A DoF outside the system moves as its face does: it
    * takes no change of velocity (FLIP), the velocity of its
    * @p held_increment over the step (PIC; empty: every such DoF held) and
-   * no acceleration, as in an implicit step. Returns the energy the local
+   * no acceleration, as in an implicit step. The run's @p first_step
+   * takes half a step's change of velocity, @f$v^{1/2} = v^0 +
+   * \tfrac12\Delta t\,a^0@f$, so that the points' velocities are those of
+   * the half steps from then on (the rule's second order; a whole step at
+   * the start put the motion half a step ahead). Returns the energy the local
    * and mass damping took out
    * over the step at the first @p n_owned DoFs (this process's), minus
    * their forces times the increment, and sets @p kinetic, the nodes'
@@ -161,6 +165,7 @@ namespace impm
                           std::vector<double>       &velocity_gradients,
                           const unsigned int         n_owned,
                           const std::vector<double> &held_increment,
+                          const bool                 first_step,
                           NodalKineticEnergy        &kinetic);
 } // namespace impm
 

@@ -51,6 +51,18 @@ namespace impm
    * energy is an estimate (elastic_energy_density()), and so is its
    * balance.
    *
+   * In explicit steps (staggered) the points' velocities are those of the
+   * half steps (the central difference rule's), a half step off the
+   * strain energy and the work, which belong to the whole steps: under a
+   * constant force the kinetic energy after the n-th step is only
+   * (n + 1/2)^2 / (n + 1)^2 of the work. There the balance is checked at
+   * each step's start @f$t_n@f$ instead, when the step is accepted: with
+   * the kinetic energy of the mean of the points' velocities before and
+   * after the step (@f$v^{n-1/2}@f$ and @f$v^{n+1/2}@f$, the rule's
+   * velocity at @f$t_n@f$) and the strain energy, work, dissipation and
+   * transfer up to @f$t_n@f$ (exact under a constant force; zero at the
+   * run's start).
+   *
    * @tparam dim Space dimension.
    */
   template <int dim>
@@ -61,8 +73,12 @@ namespace impm
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /** @brief The balance of a scene (from the Inertia subsection). */
-    EnergyBalance(const ParameterHandler &prm, const MPI_Comm communicator);
+    /** @brief The balance of a scene (from the Inertia subsection); with
+     *  @p staggered (explicit steps) it is checked at each step's start
+     *  (see the class's description). */
+    EnergyBalance(const ParameterHandler &prm,
+                  const MPI_Comm          communicator,
+                  const bool              staggered);
 
     /**
      * @brief The energy at the run's start, from the points' velocity and
@@ -87,7 +103,9 @@ namespace impm
      * local_nodal_kinetic, this process's nodes' kinetic energy at the
      * step's start and end (their difference from the points' is the
      * transfer's share). Reports an error
-     * above the tolerance (on standard error, from the first process).
+     * above the tolerance (on standard error, from the first process),
+     * naming the time it belongs to (@p start_time, the step's start, in
+     * a staggered balance; @p end_time, the step's end, otherwise).
      * Collective.
      */
     void
@@ -96,7 +114,8 @@ namespace impm
            const std::vector<double> &velocities,
            const double               local_damping_dissipation,
            const NodalKineticEnergy  &local_nodal_kinetic,
-           const double               time);
+           const double               start_time,
+           const double               end_time);
 
     /** @brief Its columns in steps.csv: the kinetic, elastic and total
      *  energy, the work from outside, the dissipated energy, the relative
@@ -121,6 +140,12 @@ namespace impm
     relative_error() const;
 
   private:
+    /** @brief Kinetic energy @p kinetic_energy plus the elastic energy,
+     *  the dissipated energy and the transfer's share now, against the
+     *  initial energy plus the work. */
+    double
+    balance_error(const double kinetic_energy) const;
+
     const double   tolerance;
     const MPI_Comm communicator;
     /** Whether the initial energy is known (start() or load()). */
@@ -145,6 +170,13 @@ namespace impm
     double largest_energy = 0.;
     /** The relative error last reported (0: none yet). */
     double reported_error = 0.;
+    /** Whether the balance is checked at each step's start (explicit). */
+    const bool staggered;
+    /** Staggered: the relative error at the last accepted step's start. */
+    double start_error = 0.;
+    /** Staggered: whether the points' velocities are those of a half step
+     *  (after the run's first step, or resumed). */
+    bool half_step_velocities = false;
   };
 } // namespace impm
 
