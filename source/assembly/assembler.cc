@@ -125,6 +125,17 @@ namespace impm
                 continue;
               }
             step.material_hoop_increment = step.hoop_increment;
+            // The point itself must stay off the axis too: the hoop
+            // stretch is its ring's average (GIMP), which can stay
+            // positive while the point crosses r = 0 (its ring turned
+            // inside out, an inverted point; the run ended with the point
+            // outside the grid).
+            if (!(point.get_location()[0] + step.displacement(increment)[0] >
+                  0.))
+              {
+                admissible = false;
+                continue;
+              }
           }
         // Without a coupling that sets the volumes each point is updated
         // at once; with it, through the coupling once every increment is
