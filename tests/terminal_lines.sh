@@ -3,7 +3,9 @@
 # processes if given (only the first prints):
 #  1. by default the scene's description, one line per attempt, the table
 #     of timings and one line of totals: the vibrating bar (TESTS/
-#     vibrating_bar.prm), explicit MUSL, 2 s in 400 steps of 0.005 s;
+#     vibrating_bar.prm), explicit MUSL, 2 s in 400 steps of 0.005 s; with
+#     inertia the totals name the energy balance's largest error and its
+#     step, those of steps.csv's energy_error (a quasi-static run's do not);
 #  2. 'Output/Terminal interval' = 150: the lines of steps 150, 300 and the
 #     last (400) only; steps.csv still holds all 400;
 #  3. with a cut: the collapse (TESTS/collapse_h1.prm) in 5 nominal load
@@ -29,6 +31,17 @@ grep -q "^Scene 'vibrating_bar' (2D)" out.txt || fail "no description of the sce
 grep -q "^| Total wallclock time elapsed since start" out.txt || fail "no table of timings"
 tail -1 out.txt | grep -q "^Finished 'vibrating_bar': 400 load steps (0 cuts)" ||
   fail "the last line is not the totals"
+/usr/bin/python3 - results/steps.csv "$(tail -1 out.txt)" <<'PY' ||
+import csv, re, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["converged"] == "1"]
+largest = max(rows, key=lambda r: abs(float(r["energy_error"])))
+percent = 100. * abs(float(largest["energy_error"]))
+text = "%.0f" % percent if percent >= 10 else "%.1f" % percent if percent >= 1 else "%.2g" % percent
+expected = ", energy balance error at most %s %% (step %s);" % (text, largest["step"])
+print("totals: ..." + sys.argv[2][sys.argv[2].index(", energy"):])
+sys.exit(0 if expected in sys.argv[2] else 1)
+PY
+  fail "the totals do not name the energy balance's largest error of steps.csv"
 
 # 2. Every 150th step and the last.
 "${launcher[@]}" "$impm" "${bar[@]}" --set "Output/Terminal interval=150" > out.txt 2> log.txt ||
@@ -43,6 +56,8 @@ collapse=("$tests/collapse_h1.prm" --set "Testing/Enabled=false" --set "Solver/L
 "${launcher[@]}" "$impm" "${collapse[@]}" > out.txt 2> log.txt || fail "the collapse failed"
 grep -q "^Finished 'collapse_h1': 11 load steps (3 cuts)" out.txt ||
   { cp out.txt log.txt; fail "the collapse did not take 11 steps with 3 cuts (the test's premise)"; }
+grep -q "energy balance" out.txt && fail "a quasi-static run's totals name an energy balance"
+
 [ "$(grep -c "^step .*: step cut " out.txt)" -eq 3 ] || fail "the cut attempts are not all printed"
 [ "$(grep "^step .*iterations [0-9]* " out.txt | awk '{print $2}' | tr '\n' ' ')" = "3 6 9 11 " ] ||
   { cp out.txt log.txt; fail "the converged steps printed are not 3, 6, 9 and 11"; }

@@ -179,6 +179,14 @@ namespace impm
           log_lines.push_back(record.log_line(scales(context)));
         else if (Utilities::MPI::this_mpi_process(context.communicator) == 0)
           {
+            if (record.converged())
+              for (const StepMeasure &measure : record.measures)
+                if (measure.column == "energy_error" &&
+                    !(std::abs(measure.value) <= largest_energy_error))
+                  {
+                    largest_energy_error      = std::abs(measure.value);
+                    largest_energy_error_step = record.step_number;
+                  }
             const std::string progress = clock.after(record);
             const bool        shown =
               !record.converged() || record.last ||
@@ -219,9 +227,9 @@ namespace impm
        * 50 load steps (2 cuts), 102 Newton iterations, wall time 1.21 s
        * (resumed runs included); files in output/".
        */
-      static void
+      void
       print_totals(const RunContext<dim>    &context,
-                   const RunStatistics<dim> &statistics)
+                   const RunStatistics<dim> &statistics) const
       {
         std::cout << "Finished '" << context.parameters.scene.name
                   << "': " << statistics.n_converged_steps << " load steps ("
@@ -233,8 +241,23 @@ namespace impm
                           std::to_string(statistics.line_search_evaluations) +
                           " line-search residuals)" :
                         std::string())
-                  << ", wall time " << format_duration(statistics.wall_time)
-                  << "; files in " << context.parameters.scene.output_directory
+                  << ", wall time " << format_duration(statistics.wall_time);
+        // A scene with inertia: the energy balance's largest error, which
+        // the warnings on standard error report as it happens.
+        if (largest_energy_error >= 0.)
+          {
+            const double percent = 100. * largest_energy_error;
+            char         text[32];
+            std::snprintf(text,
+                          sizeof(text),
+                          percent >= 10. ? "%.0f" :
+                          percent >= 1.  ? "%.1f" :
+                                           "%.2g",
+                          percent);
+            std::cout << ", energy balance error at most " << text
+                      << " % (step " << largest_energy_error_step << ")";
+          }
+        std::cout << "; files in " << context.parameters.scene.output_directory
                   << "/" << std::endl;
       }
 
@@ -275,6 +298,10 @@ namespace impm
 
       /** The test summary's lines per attempt. */
       std::vector<std::string> log_lines;
+      /** The largest relative error of the energy balance over the run's
+       *  converged steps (negative: none measured), and its step. */
+      double       largest_energy_error      = -1.;
+      unsigned int largest_energy_error_step = 0;
       /** The attempts' wall times and the estimate of the time left. */
       ProgressClock clock;
     };
