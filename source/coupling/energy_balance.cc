@@ -116,9 +116,12 @@ namespace impm
           {
             const double v = velocities[p * dim + i];
             local_kinetic += 0.5 * state.mass() * v * v;
-            // The points still hold the velocity before the step.
-            const double mean = 0.5 * (v + properties[velocity_first + i]);
-            local_mean_kinetic += 0.5 * state.mass() * mean * mean;
+            if (staggered)
+              {
+                // The points still hold the velocity before the step.
+                const double mean = 0.5 * (v + properties[velocity_first + i]);
+                local_mean_kinetic += 0.5 * state.mass() * mean * mean;
+              }
           }
       }
     if (staggered)
@@ -127,7 +130,7 @@ namespace impm
         const double mean_kinetic =
           Utilities::MPI::sum(local_mean_kinetic, communicator);
         largest_energy       = std::max(largest_energy, mean_kinetic);
-        start_error          = half_step_velocities ?
+        start_error          = half_step_velocities && largest_energy > 0. ?
                                  balance_error(mean_kinetic) / largest_energy :
                                  0.;
         half_step_velocities = true;
