@@ -5,6 +5,7 @@
 #include <impm/contact/rigid_contact.h>
 #include <impm/postprocess/column_solution.h>
 #include <impm/postprocess/postprocessor.h>
+#include <impm/postprocess/progress_clock.h>
 
 #include <algorithm>
 #include <chrono>
@@ -23,133 +24,6 @@ namespace impm
     /** A point's id and its printed values: X, u, sigma_vertical, sigma_xx
      *  (and in axisymmetry the hoop stress). */
     using PointValues = std::pair<types::particle_index, std::vector<double>>;
-
-    /**
-     * @brief A duration for a person: "0.4 ms", "52 ms", "3.52 s", "38 s",
-     * "12 min", "3.1 h".
-     */
-    std::string
-    format_duration(const double seconds)
-    {
-      char buffer[32];
-      if (seconds < 0.01)
-        std::snprintf(buffer, sizeof(buffer), "%.1f ms", 1e3 * seconds);
-      else if (seconds < 1.)
-        std::snprintf(buffer, sizeof(buffer), "%.0f ms", 1e3 * seconds);
-      else if (seconds < 10.)
-        std::snprintf(buffer, sizeof(buffer), "%.2f s", seconds);
-      else if (seconds < 120.)
-        std::snprintf(buffer, sizeof(buffer), "%.0f s", seconds);
-      else if (seconds < 7200.)
-        std::snprintf(buffer, sizeof(buffer), "%.0f min", seconds / 60.);
-      else
-        std::snprintf(buffer, sizeof(buffer), "%.1f h", seconds / 3600.);
-      return buffer;
-    }
-
-
-
-    /**
-     * @brief A step's time for its line, resolving a tenth of the attempt's
-     * time step @p step: four decimals at least ("0.5910"), more for short
-     * steps ("0.000120" for steps of 1e-5 s), and in scientific notation
-     * from 1e6 s or for steps below 1e-8 s, with the digits that tell one
-     * step from the next ("1.20000e-06", "1.221e+08").
-     */
-    std::string
-    time_text(const double time, const double step)
-    {
-      std::ostringstream text;
-      const int          decimals =
-        step > 0. ?
-                   std::max(4,
-                   static_cast<int>(std::ceil(-std::log10(step) - 1e-3)) + 1) :
-                   4;
-      if (std::abs(time) < 1e6 && decimals <= 9)
-        text << std::fixed << std::setprecision(decimals) << time;
-      else
-        {
-          const double steps =
-            step > 0. ? std::max(std::abs(time) / step, 1.) : 1.;
-          const int digits =
-            std::clamp(static_cast<int>(std::ceil(std::log10(steps))) + 2,
-                       4,
-                       15);
-          text << std::scientific << std::setprecision(digits - 1) << time;
-        }
-      return text.str();
-    }
-
-
-
-    /**
-     * @brief The wall time of each load-step attempt and an estimate of the
-     * time left: the progress still to go (of 0 to 1, StepRecord's
-     * target_progress) times the wall time per unit of progress over the
-     * last few attempts (a cut attempt adds its time and no progress, so
-     * cuts slow the estimate down as they slow the run).
-     */
-    class ProgressClock
-    {
-    public:
-      /** @brief Start the clock (the run's first attempt starts now). */
-      ProgressClock()
-        : last(std::chrono::steady_clock::now())
-      {}
-
-      /**
-       * @brief The text after an attempt's line: "  t 0.1200 s  24.0%
-       * step 0.81 s  left ~38 s" (the time only in a scene in time; no
-       * estimate before any progress, none after the last step).
-       */
-      std::string
-      after(const StepRecord &record)
-      {
-        const auto   now  = std::chrono::steady_clock::now();
-        const double wall = std::chrono::duration<double>(now - last).count();
-        last              = now;
-        const double reached =
-          record.converged() ? record.target_progress : record.start_progress;
-        recent.emplace_back(wall,
-                            record.converged() ?
-                              record.target_progress - record.start_progress :
-                              0.);
-        if (recent.size() > n_recent)
-          recent.pop_front();
-        double recent_wall = 0., recent_progress = 0.;
-        for (const auto &[seconds, progress] : recent)
-          {
-            recent_wall += seconds;
-            recent_progress += progress;
-          }
-        std::ostringstream text;
-        text << std::fixed;
-        if (record.end_time >= 0.)
-          {
-            const double step =
-              record.target_progress > 0. ?
-                record.end_time *
-                  (1. - record.start_progress / record.target_progress) :
-                0.;
-            text << "  t " << time_text(record.end_time, step) << " s";
-          }
-        text << "  " << std::setprecision(1) << 100. * reached << "%"
-             << "  step " << format_duration(wall);
-        if (reached < 1. && recent_progress > 0.)
-          text << "  left ~"
-               << format_duration((1. - reached) * recent_wall /
-                                  recent_progress);
-        return text.str();
-      }
-
-    private:
-      /** The attempts the estimate averages over. */
-      static constexpr std::size_t n_recent = 5;
-      /** The end of the last attempt. */
-      std::chrono::steady_clock::time_point last;
-      /** Wall time and progress of the last attempts. */
-      std::deque<std::pair<double, double>> recent;
-    };
 
     /**
      * @brief What a run prints on the terminal: a line per load-step attempt
