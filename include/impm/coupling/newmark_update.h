@@ -92,7 +92,7 @@ namespace impm
    * product by owned DoF, with the integrator's share of the lumped mass,
    * or the lumped mass where it is empty), and @f$r^n@f$ the start's
    * residual @p start_residual (empty: none), plus the mass damping's
-   * @f$lpha_R (p + \Delta t((1-\gamma) q + \gamma M a^{n+1}) + k_r
+   * @f$\alpha_R (p + \Delta t((1-\gamma) q + \gamma M a^{n+1}) + k_r
    * p)@f$.
    */
   template <int dim>

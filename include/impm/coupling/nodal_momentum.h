@@ -30,10 +30,10 @@ namespace impm
    * With the affine transfer (APIC) each point also carries the gradient
    * @f$C_p@f$ of the nodes' velocity (the declared point field
    * `velocity_gradient`, row-major) and gives the nodes the momentum of
-   * the affine field about the centre of its weights, @f$ar x_p =
+   * the affine field about the centre of its weights, @f$\bar x_p =
    * \sum_I N_{Ip} x_I / \sum_I N_{Ip}@f$: @f$p_I = \sum_p N_{Ip} m_p (v_p +
-   * C_p (x_I - ar x_p))@f$. The affine part adds no momentum in total
-   * (@f$\sum_I N_{Ip}(x_I - ar x_p) = 0@f$), and a velocity field linear
+   * C_p (x_I - \bar x_p))@f$. The affine part adds no momentum in total
+   * (@f$\sum_I N_{Ip}(x_I - \bar x_p) = 0@f$), and a velocity field linear
    * in space (a rigid rotation) reaches the nodes exactly, however few
    * points share them.
    *
