@@ -290,6 +290,12 @@ expect time_step_above_end_time "Parameter 'Time/Time step' = 2 is not allowed: 
 expect load_factor_without_time "Parameter 'Time/Load factor' = 't' needs 'Time/End time' above 0" - -- "$base" --set "Time/Load factor=t"
 expect load_factor_bad_expression "Parameter 'Time/Load factor' = 'sin\\(t' is not allowed: it must be an expression in t" - -- "$base" --set "Time/End time=1" --set "Time/Load factor=sin(t"
 expect load_factor_infinite "Parameter 'Time/Load factor' = '1/t' is not allowed: it must be an expression in t" - -- "$base" --set "Time/End time=1" --set "Time/Load factor=1/t"
+# A load factor not 0 at t = 0 would lose its share of a prescribed face's
+# displacement or a rigid body's motion (they start from the initial
+# state): refused, naming the face or the body.
+expect load_factor_start_face "Parameter 'Time/Load factor' = '1' is 1 at t = 0, but the displacement of face x\+ \('Grid/Condition x\+'\) starts from the scene's initial state" - -- "$(dirname "$base")/energy_balance_pulled_bar.prm" --set "Time/Load factor=1"
+expect load_factor_start_body "Parameter 'Time/Load factor' = '0.5 \+ t' is 0.5 at t = 0, but the motion of Rigid body 1 starts from the scene's initial state" - -- "$(dirname "$base")/contact_plate_compression.prm" --set "Time/End time=1" --set "Time/Load factor=0.5 + t"
+expect inertia_velocity_in_time "Parameter 'Inertia/Initial velocity' = 't; 0' is not allowed: it must be 0 or 2 expressions in x, y separated by ';'" also_parallel -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Initial velocity=t; 0"
 
 # Declared point state: a field no point stores; a checkpoint resumed into
 # points laid out otherwise (the plastic model's state, then an elastic

@@ -36,7 +36,18 @@
 #     point (its ring turned inside out), and the run reaches its end with
 #     every point at r > 0 (0.000163 m the smallest). Until 2026-11-29 the
 #     ring-averaged hoop stretch let such a step pass and the run ended in
-#     step 5 with a point at r = -4e-5 m "outside the background grid".
+#     step 5 with a point at r = -4e-5 m "outside the background grid";
+#  6. energy made from nothing: the vibrating bar (tests/vibrating_bar.prm,
+#     its initial energy rho A v0^2 L / 4 = 0.0625 J) with 4x4 GIMP points
+#     per cell in explicit USL steps of 0.05 s, 100 s, which blows up where
+#     points enter cells their neighbours do not fill (known, documented).
+#     With 'Inertia/Energy growth limit' = 0 it runs to its end, exit code
+#     0, its total energy growing past 50 times the initial (83 measured: the wrong
+#     answer the limit is for); with the default limit (10) it stops with
+#     one error line naming the limit and the initial energy, a non-zero
+#     exit code, within 4 steps of where the first run's points first hold
+#     11 times the initial energy, its steps.csv the first run's rows up to
+#     there (measured: t = 80.8 s, 10.6 times).
 # Usage: inertia_hard_cases.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -142,4 +153,34 @@ smallest=$(sed -n 's/^extent in x: initial points \[.*\], final \[\([^,]*\),.*/\
 /usr/bin/python3 -c "import sys; sys.exit(0 if float('$smallest') > 0. else 1)" ||
   fail "axis: a point ended at r = $smallest"
 echo "onto the axis: $(grep -c 'inverted point after 0 iterations: step cut' log.txt) steps cut, the smallest radius at the end $smallest m"
+# 6. Energy made from nothing.
+usl=(--set "Testing/Enabled=false" --set "Inertia/Integrator=explicit USL"
+  --set "Time/Time step=0.05" --set "Time/End time=100" --set "Output/Interval=0"
+  --set "Body 1/Points per cell direction=4")
+rm -rf results
+"${launcher[@]}" "$impm" "$(dirname "$scene")/vibrating_bar.prm" "${usl[@]}" \
+  --set "Inertia/Energy growth limit=0" > log.txt 2>&1 ||
+  { cat log.txt; fail "growth: the run without the limit failed"; }
+mv results/steps.csv unlimited_steps.csv
+rm -rf results
+"${launcher[@]}" "$impm" "$(dirname "$scene")/vibrating_bar.prm" "${usl[@]}" > log.txt 2>&1 &&
+  fail "growth: the unstable run went through"
+[ "$(grep -c '^Error: ' log.txt)" -eq 1 ] || { cat log.txt; fail "growth: not one error line"; }
+grep -q "^Error: At t = [0-9.]* s the points hold .* J more than was put in, [0-9.]* times the most energy put in so far (0.0625 J, the initial energy plus the work from outside; 'Inertia/Energy growth limit' = 10): the time integration has become unstable" log.txt ||
+  { cat log.txt; fail "growth: the error does not name the limit and the initial energy"; }
+/usr/bin/python3 - unlimited_steps.csv results/steps.csv <<'PY' || fail "growth: the stop"
+import csv, sys
+free = list(csv.DictReader(open(sys.argv[1])))
+stopped = list(csv.DictReader(open(sys.argv[2])))
+energy = lambda r: float(r["total_energy"])
+largest = max(energy(r) for r in free)
+crossed = next(k for k, r in enumerate(free) if energy(r) > 11 * 0.0625)
+keys = ["time", "kinetic_energy", "strain_energy", "transfer_loss", "energy_error"]
+same = all(a[k] == b[k] for a, b in zip(free, stopped) for k in keys)
+print("energy made from nothing: without the limit %d steps to t = %s s, total energy up to %.3g J;"
+      % (len(free), free[-1]["time"], largest))
+print("  with it stopped at t = %s s (step %d), the first run's energy passed 11 x 0.0625 J at t = %s s"
+      % (stopped[-1]["time"], len(stopped), free[crossed]["time"]))
+sys.exit(0 if largest > 50 * 0.0625 and abs(len(stopped) - (crossed + 1)) <= 4 and same else 1)
+PY
 echo "inertia_hard_cases: passed"

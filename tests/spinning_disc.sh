@@ -24,9 +24,12 @@
 # affine transfer adds no momentum);
 #  5. FLIP with explicit USL and standard MPM: the known instability of
 #     that pair (a node that a point barely reaches moves the point's strain
-#     by its tiny mass) breaks the disc up within 300 steps; the step control
-#     cuts the step and the run stops in one line that names the explicit
-#     step (not a Newton solve) and lists the attempts without residuals;
+#     by its tiny mass) makes energy from nothing within 50 steps: the run
+#     stops in one line at t = 0.08 s, its points holding 20 times the
+#     energy put in ('Inertia/Energy growth limit', 10); without the limit
+#     the disc breaks up within 300 steps, the step control cuts the step
+#     and the run stops in one line that names the explicit step (not a
+#     Newton solve) and lists the attempts without residuals;
 #  6. APIC stopped at step 1700 with a checkpoint at step 1500 and resumed
 #     (on the launcher's processes): the uninterrupted run's steps.csv and
 #     point history (the points' velocity gradient is kept).
@@ -102,8 +105,16 @@ run apic_trapezoidal --set "Inertia/Integrator=Newmark" --set "Time/Time step=0.
 check apic_trapezoidal 5e-3 1e-2 1e-3 || fail "APIC, the trapezoidal rule"
 run flip_musl --set "Inertia/Velocity update=FLIP/PIC"
 check flip_musl 0 0 0 flip || fail "FLIP is no longer a hard case here"
-"$impm" "$scene" "${quiet[@]}" --set "Output directory=usl_standard" --set "Inertia/Velocity update=FLIP/PIC" \
+"$impm" "$scene" "${quiet[@]}" --set "Output directory=usl_growth" --set "Inertia/Velocity update=FLIP/PIC" \
   --set "Inertia/Integrator=explicit USL" --set "Material points/Basis=standard MPM" > log.txt 2>&1 &&
+  fail "explicit USL with standard MPM ran through"
+[ "$(grep -c '^Error: ' log.txt)" -eq 1 ] || fail "USL, standard MPM: not one error line"
+grep -qE "^Error: At t = 0.0[0-9]* s the points hold .* J more than was put in, [0-9.]+ times the most energy put in so far \(6.2[0-9] J" log.txt ||
+  fail "USL, standard MPM: the run was not stopped for the energy made within 50 steps"
+echo "explicit USL, standard MPM: $(grep '^Error: ' log.txt | cut -c1-90)..."
+"$impm" "$scene" "${quiet[@]}" --set "Output directory=usl_standard" --set "Inertia/Velocity update=FLIP/PIC" \
+  --set "Inertia/Integrator=explicit USL" --set "Material points/Basis=standard MPM" \
+  --set "Inertia/Energy growth limit=0" > log.txt 2>&1 &&
   fail "explicit USL with standard MPM ran through"
 [ "$(grep -c '^Error: ' log.txt)" -eq 1 ] || fail "USL, standard MPM: not one error line"
 grep -qE "^Error: Load step [0-9]+ \(from t = .* s to .* s\): the explicit step: inverted point\. The time step would fall below" log.txt ||

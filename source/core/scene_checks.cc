@@ -383,6 +383,46 @@ namespace impm
 
 
 
+    template <int dim>
+    void
+    check_motion_start(const Parameters::All<dim> &parameters,
+                       const Parameters::Time     &time)
+    {
+      if (!time.in_time())
+        return;
+      const double start_factor = LoadPath(time).load_factor(0.);
+      if (start_factor == 0.)
+        return;
+      static const char *const face_names[] = {
+        "x-", "x+", "y-", "y+", "z-", "z+"};
+      std::string moved;
+      for (unsigned int f = 0; f < 2 * dim && moved.empty(); ++f)
+        if (Parameters::is_prescribed(parameters.grid.face_conditions[f]) &&
+            parameters.grid.face_displacements[f].norm() > 0.)
+          moved = std::string("the displacement of face ") + face_names[f] +
+                  " ('Grid/Condition " + face_names[f] + "')";
+      for (unsigned int k = 0;
+           k < parameters.rigid_bodies.size() && moved.empty();
+           ++k)
+        if (parameters.rigid_bodies[k].displacement_at(1.).norm() > 0. ||
+            parameters.rigid_bodies[k].rotates())
+          moved = "the motion of Rigid body " + std::to_string(k + 1);
+      if (!moved.empty())
+        throw InputError(
+          "Parameter 'Time/Load factor' = '" + time.load_factor + "' is " +
+          number_text(start_factor) + " at t = 0, but " + moved +
+          " starts from the scene's initial state and follows the factor's "
+          "change: its share at t = 0 would be lost. Give a load factor "
+          "that is 0 at t = 0 (e.g. 't < 0.01 ? t/0.01 : 1' for a load "
+          "applied within 0.01 s).");
+    }
+
+
+
+    template void
+    check_motion_start<2>(const Parameters::All<2> &, const Parameters::Time &);
+    template void
+    check_motion_start<3>(const Parameters::All<3> &, const Parameters::Time &);
     template void
     check_supports<2>(const Parameters::All<2> &,
                       const std::function<bool(unsigned int)> &);

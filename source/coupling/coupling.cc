@@ -385,6 +385,15 @@ namespace impm
 
 
   template <int dim>
+  std::string
+  Coupling<dim>::run_failure() const
+  {
+    return "";
+  }
+
+
+
+  template <int dim>
   void
   Coupling<dim>::take_step_energy(const StepEnergy &)
   {}

@@ -163,6 +163,18 @@ namespace impm
 
 
   template <int dim>
+  std::string
+  Couplings<dim>::run_failure() const
+  {
+    for (const auto &coupling : couplings)
+      if (std::string failure = coupling->run_failure(); !failure.empty())
+        return failure;
+    return "";
+  }
+
+
+
+  template <int dim>
   void
   Couplings<dim>::account_step_energy(const LoadStepSystem<dim> &system,
                                       const NodalVector         &increment,

@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <iostream>
+#include <limits>
+#include <sstream>
 #include <string>
 
 namespace impm
@@ -30,6 +33,20 @@ namespace impm
       "around it); it measures the time integration (the kinetic energy the "
       "transfer between points and nodes takes out is written apart, "
       "transfer_loss).");
+    prm.declare_entry(
+      "Energy growth limit",
+      "10",
+      Patterns::Double(0.),
+      "The run stops with an error when the points hold more energy than "
+      "was put in by more than this many times the most energy put in so "
+      "far, and by more at each of three steps in a row: their kinetic "
+      "plus elastic plus dissipated energy above the initial energy plus "
+      "the work from outside. A stable integration "
+      "makes no energy (it loses some to its numerical dissipation and the "
+      "transfer between points and nodes, which never stops a run); "
+      "energy made from nothing is an integration gone unstable (explicit "
+      "USL where points enter cells their neighbours do not fill), and its "
+      "answer is wrong. 0: never stop.");
   }
 
 
@@ -39,6 +56,7 @@ namespace impm
                                     const MPI_Comm          communicator,
                                     const bool              staggered)
     : tolerance(prm.get_double("Energy balance tolerance"))
+    , growth_limit(prm.get_double("Energy growth limit"))
     , communicator(communicator)
     , staggered(staggered)
   {}
@@ -62,17 +80,33 @@ namespace impm
         for (unsigned int i = 0; i < dim; ++i)
           local_kinetic += 0.5 * state.mass() * properties[velocity_first + i] *
                            properties[velocity_first + i];
-        ConstitutiveUpdate update;
+        // The stored energy as the material's update gives it for no
+        // motion (a pressure-dependent elasticity's own), else from the
+        // stress and the elastic strain.
+        const PointStep<dim> &step = steps.of(point);
+        ConstitutiveUpdate    update;
+        try
+          {
+            step.material->update(static_cast<Tensor<2, 3>>(
+                                    unit_symmetric_tensor<3>()),
+                                  state.elastic_left_cauchy_green(),
+                                  material_points.material_state(properties),
+                                  update);
+          }
+        catch (const ExceptionBase &)
+          {
+            update = ConstitutiveUpdate();
+          }
         update.kirchhoff_stress          = state.kirchhoff_stress();
         update.elastic_left_cauchy_green = state.elastic_left_cauchy_green();
-        local_elastic +=
-          steps.of(point).initial_volume * elastic_energy_density(update);
+        local_elastic += step.initial_volume * elastic_energy_density(update);
       }
     initial_kinetic = Utilities::MPI::sum(local_kinetic, communicator);
     initial_elastic = Utilities::MPI::sum(local_elastic, communicator);
     kinetic         = initial_kinetic;
     elastic         = initial_elastic;
     largest_energy  = std::abs(initial_kinetic + initial_elastic);
+    largest_input   = largest_energy;
     started         = true;
   }
 
@@ -129,10 +163,15 @@ namespace impm
         // The balance at the step's start, from the sums up to it.
         const double mean_kinetic =
           Utilities::MPI::sum(local_mean_kinetic, communicator);
-        largest_energy       = std::max(largest_energy, mean_kinetic);
-        start_error          = half_step_velocities && largest_energy > 0. ?
-                                 balance_error(mean_kinetic) / largest_energy :
-                                 0.;
+        largest_energy = std::max(largest_energy, mean_kinetic);
+        const double balance =
+          half_step_velocities ? balance_error(mean_kinetic) : 0.;
+        start_error = largest_energy > 0. ? balance / largest_energy : 0.;
+        // No balance before the first half step: nothing to judge.
+        error_energy         = half_step_velocities ?
+                                 balance - transfer_loss :
+                                 std::numeric_limits<double>::quiet_NaN();
+        error_time           = start_time;
         half_step_velocities = true;
       }
     const double start_kinetic = kinetic;
@@ -155,7 +194,19 @@ namespace impm
                                         std::abs(external_work),
                                         std::abs(dissipated),
                                         std::abs(transfer_loss)});
-    const double error      = std::abs(relative_error());
+    largest_input =
+      std::max(largest_input,
+               std::abs(initial_kinetic + initial_elastic + external_work));
+    growth_before = {growth_before[1], growth};
+    growth        = largest_input > 0. && !std::isnan(error_energy) ?
+                      error_energy / largest_input :
+                      std::numeric_limits<double>::infinity();
+    if (!staggered)
+      {
+        error_energy = balance_error(kinetic) - transfer_loss;
+        error_time   = end_time;
+      }
+    const double error = std::abs(relative_error());
     if (error > tolerance && error >= 2. * reported_error)
       {
         reported_error = error;
@@ -184,6 +235,34 @@ namespace impm
     if (!(largest_energy > 0.))
       return 0.;
     return balance_error(kinetic) / largest_energy;
+  }
+
+
+
+  template <int dim>
+  std::string
+  EnergyBalance<dim>::unstable_growth() const
+  {
+    // Growing over three steps: a start whose work lags its motion (a face
+    // pulled from rest: 8.5 times its tiny work after the first step)
+    // falls back as the work grows; an instability keeps growing.
+    if (!(growth_limit > 0.) || !(growth > growth_limit) ||
+        !(growth > growth_before[1] && growth_before[1] > growth_before[0]))
+      return "";
+    std::ostringstream message;
+    message << std::setprecision(3) << "At t = " << error_time
+            << " s the points hold " << error_energy
+            << " J more than was put in, " << std::fixed << std::setprecision(2)
+            << growth << std::defaultfloat << std::setprecision(3)
+            << " times the most energy put in so far (" << largest_input
+            << " J, the initial energy plus the work from outside; "
+               "'Inertia/Energy growth limit' = "
+            << growth_limit
+            << "): the time integration has become unstable and its "
+               "answer is wrong (a time step too large for the scene, or "
+               "explicit USL where points enter cells their neighbours do "
+               "not fill: use explicit MUSL).";
+    return message.str();
   }
 
 
@@ -250,7 +329,8 @@ namespace impm
                                   external_work,
                                   transfer_loss,
                                   largest_energy,
-                                  reported_error});
+                                  reported_error,
+                                  largest_input});
   }
 
 
@@ -260,10 +340,11 @@ namespace impm
   EnergyBalance<dim>::load(const RunState &state)
   {
     const std::vector<double> values = state.get_list("energy balance");
-    if (values.size() != 10)
+    // Checkpoints before 'Energy growth limit' hold 10 values.
+    if (values.size() != 10 && values.size() != 11)
       throw InputError("The checkpoint's 'energy balance' has " +
                        std::to_string(values.size()) +
-                       " values, not 10: a damaged checkpoint.");
+                       " values, not 11: a damaged checkpoint.");
     initial_kinetic     = values[0];
     initial_elastic     = values[1];
     kinetic             = values[2];
@@ -274,7 +355,12 @@ namespace impm
     transfer_loss       = values[7];
     largest_energy      = values[8];
     reported_error      = values[9];
-    started             = true;
+    largest_input =
+      values.size() == 11 ?
+        values[10] :
+        std::max(std::abs(initial_kinetic + initial_elastic),
+                 std::abs(initial_kinetic + initial_elastic + external_work));
+    started = true;
     // A resumed run's points carry the velocities of a half step.
     half_step_velocities = true;
   }

@@ -210,8 +210,7 @@ namespace impm
         energy_balance.save(state);
       }
 
-      /** @brief A resumed run's points carry their accelerations; the
-       *  energy balance goes on from its sums. */
+      /** @brief A resumed run: its points carry their accelerations. */
       void
       load(const RunState &state) override
       {
@@ -229,6 +228,12 @@ namespace impm
       take_step_energy(const StepEnergy &energy) override
       {
         energy_balance.take(energy);
+      }
+      /** @brief Energy made from nothing (EnergyBalance::unstable_growth()). */
+      std::string
+      run_failure() const override
+      {
+        return energy_balance.unstable_growth();
       }
 
       /** @brief The mass ghost penalty's faces of the step. */
@@ -545,37 +550,33 @@ namespace impm
       /** The step's points and system (set in begin_attempt()). */
       const MaterialPoints<dim> *current_points = nullptr;
       const LoadStepSystem<dim> *current_system = nullptr;
-      /** The explicit step's increment on the local DoFs, and that of
-       *  the DoFs a face moves (empty where none moves). */
+      /** The explicit step's increment on the local DoFs; that of the
+       *  DoFs a face moves (empty where none moves). */
       std::vector<double> explicit_increment, held_increment;
-      /** The points' new velocities, accelerations and (APIC) velocity
-       *  gradients (by step index). */
+      /** The points' new velocities, accelerations, APIC gradients. */
       std::vector<double> point_velocities, point_accelerations,
         point_velocity_gradients;
       /** The nodes' mass and momentum of the step's start. */
       NodalMomentum<dim> nodes;
       /** The stiffness-proportional damping (inactive at 0). */
       StiffnessDamping<dim> stiffness_damping;
-      /** The stiffness of the rigid bodies' contact as a factor of the
-       *  material's Young's modulus (contact_penalty_factor()), 0 without
-       *  rigid bodies. */
+      /** The rigid bodies' contact stiffness as a factor of the material's
+       *  Young's modulus (contact_penalty_factor()), 0 without them. */
       const double contact_penalty;
       /** The mass's ghost penalty (inactive at 0). */
       MassGhostPenalty<dim> mass_ghost;
       /** The largest stiffness per area of the scene's springs on faces
        *  (Coupling::surface_stiffness()), told by use_explicit_steps(). */
       double springs_stiffness = 0.;
-      /** The scene, for the explicit start check (its references, to the
-       *  run's parameters and grid, outlive the couplings). */
+      /** The scene, for the explicit start check (its references outlive
+       *  the couplings). */
       const CouplingInputs<dim> inputs;
-      /** The residual of the step's start on the local DoFs (empty
-       *  unless generalised-alpha). */
+      /** The residual of the step's start on the local DoFs. */
       std::vector<double> start_residual;
       double              inertial_force_norm = 0.;
       /** The size of the step's momentum part of the inertial force,
        *  @f$|M v^n| / (\beta \Delta t)@f$ (implicit integrators). */
-      double momentum_force = 0.;
-      /** The energy balance. */
+      double             momentum_force = 0.;
       EnergyBalance<dim> energy_balance;
       /** The end time of the step's attempt; the energy the damping and
        *  the mass's ghost penalty took out at this process's owned DoFs in

@@ -238,10 +238,13 @@ namespace impm
     force.reinit(increment);
     add_implicit_forces(nodes, system, increment, time_step, force);
     force.compress(VectorOperation::add);
+    // The force is that of the weighted velocity v^{n+1} + k_r v^n, the
+    // balance at t_{n+1-alpha_f} divided by 1 - alpha_f = 1 / (1 + k_r):
+    // the viscous stress's work over the step is the weighted one's.
     double dissipation = 0.;
     for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
       dissipation += force.local_element(i) * increment.local_element(i);
-    return dissipation;
+    return dissipation / (1. + k_r);
   }
 
 

@@ -372,6 +372,18 @@ namespace impm
     result.plastic_multiplier       = principal.plastic_multiplier;
     result.return_ratio             = principal.shear_coefficient / (2. * mu);
     set_coaxial_state(principal.stress, principal.elastic_strain, result);
+    // The stored energy psi (the class's text), zero at p = p_ref and no
+    // shear: its change is the stress's work on the elastic strain, which
+    // the estimate tau : eps / 2 of set_coaxial_state() is not for a
+    // pressure-dependent modulus.
+    const auto  &eps_e            = principal.elastic_strain;
+    const double eps_v            = -(eps_e[0] + eps_e[1] + eps_e[2]);
+    double       deviator_squared = 0.;
+    for (unsigned int a = 0; a < 3; ++a)
+      deviator_squared += (eps_e[a] + eps_v / 3.) * (eps_e[a] + eps_v / 3.);
+    result.elastic_energy = parameters.reference_pressure * kappa_star *
+                              std::expm1(eps_v / kappa_star) +
+                            mu * deviator_squared;
   }
 
 

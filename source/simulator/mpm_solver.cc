@@ -190,6 +190,12 @@ namespace impm
           }
         if (!record.converged())
           continue;
+        if (const std::string failure = couplings.run_failure();
+            !failure.empty())
+          {
+            postprocessors->after_failure(record.target);
+            throw CollectiveError(failure);
+          }
         if (stop_condition)
           {
             stop_reason = stop_condition();
@@ -543,16 +549,11 @@ namespace impm
                               parameters.material_points.update_domains,
                             parameters.material_points.move_points,
                             record.step_number);
-    // The step's per-point data is made anew for the next step. When it is
-    // large, it is freed here and returned to the system, so that the
-    // re-sorting's buffers do not come on top of it; then the freed
-    // buffers (many small pieces, which the next step's one large block
-    // could not reuse) are returned too. (Under Open MPI glibc keeps what
-    // is freed: on the 10^6-point scene on 2 processes, 365 MB of step
-    // data per process, the peak fell from 1.03-1.41 GB to 0.86-0.92 GB
-    // per process. On the 3D collapse at h = 1 m, 7.5 MB, the page faults
-    // of touching the memory anew cost 2 % of the run: small step data is
-    // kept.)
+    // Large per-point step data (made anew for the next step) is returned to
+    // the system before the re-sorting, and the re-sorting's freed buffers
+    // after it (glibc under Open MPI keeps what is freed: the 10^6-point
+    // scene's peak on 2 processes fell from 1.03-1.41 to 0.86-0.92 GB a
+    // process); small step data is kept (touching memory anew costs 2 %).
     const bool large =
       system.point_steps.memory_consumption() > large_step_data;
     if (large)

@@ -28,6 +28,7 @@ namespace impm
     parameters.scene.file            = options.scene_file;
     parameters.scene.stop_after_step = options.stop_after_step;
     SceneChecks::check(parameters, communicator);
+    SceneChecks::check_motion_start(parameters, settings.time);
     if (settings.output.analytical_solution ==
         Parameters::AnalyticalSolution::column)
       ColumnSolution<dim>::check_scene(parameters);

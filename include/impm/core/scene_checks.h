@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <impm/core/load_path.h>
 #include <impm/core/parameters.h>
 
 #include <functional>
@@ -45,6 +46,17 @@ namespace impm
     void
     check_supports(const Parameters::All<dim>              &parameters,
                    const std::function<bool(unsigned int)> &held_elsewhere);
+
+    /**
+     * @brief Refuse a load factor of @p time that is not 0 at t = 0 when
+     * the scene prescribes a face's displacement or a rigid body's motion:
+     * those start from the scene's initial state and follow the factor's
+     * change, so its value at t = 0 would be lost without a word.
+     */
+    template <int dim>
+    void
+    check_motion_start(const Parameters::All<dim> &parameters,
+                       const Parameters::Time     &time);
 
   } // namespace SceneChecks
 } // namespace impm

@@ -475,6 +475,13 @@ namespace impm
     virtual void
     take_step_energy(const StepEnergy &energy);
 
+    /** @brief Why the run cannot go on after the accepted step although
+     *  it converged (empty if it can): a check of the solution itself, as
+     *  the energy balance of an integration gone unstable. After the
+     *  step's output; the same on every process. */
+    virtual std::string
+    run_failure() const;
+
     /** @brief The force of the material on what this coupling stands for
      *  (bodies, springs) at the last accepted step, which carries part of
      *  the load (zero by default). */

@@ -97,6 +97,11 @@ namespace impm
     bool
     keep_energy_balance() const;
 
+    /** @brief The first coupling's Coupling::run_failure() (empty if
+     *  none has one). */
+    std::string
+    run_failure() const;
+
     /** @brief Tell the keepers of the energy balance what the converged
      *  step with displacement increment @p increment moved: @p
      *  work_of_loads (the loads' and the faces' work on the material,

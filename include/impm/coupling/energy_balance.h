@@ -10,6 +10,8 @@
 #include <impm/points/material_points.h>
 #include <impm/points/point_step.h>
 
+#include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -47,9 +49,11 @@ namespace impm
    * account. It is written relative to the run's largest energy so far
    * (the largest of @f$E_k, E_s, |W|, |D|, |T|@f$ and the initial
    * energy) and reported in one line when it exceeds the tolerance the
-   * scene names, then again each time it has doubled. Cam-clay's elastic
-   * energy is an estimate (elastic_energy_density()), and so is its
-   * balance.
+   * scene names, then again each time it has doubled. The elastic energy
+   * is each material's stored energy (elastic_energy_density(); at the
+   * start, that of the material's update without motion), Cam-clay's its
+   * potential. Energy made from nothing stops the run
+   * (unstable_growth()).
    *
    * In explicit steps (staggered) the points' velocities are those of the
    * half steps (the central difference rule's), a half step off the
@@ -139,6 +143,21 @@ namespace impm
     double
     relative_error() const;
 
+    /**
+     * @brief Why the run cannot go on (empty if it can): after the last
+     * accepted step the points hold more energy (kinetic, elastic and
+     * dissipated; not the transfer's, which is the nodes') than was put in
+     * (the initial energy plus the work from outside) by more than 'Energy
+     * growth limit' times the most energy put in so far, and by more at
+     * each of the last three steps (a start whose work lags its motion
+     * falls back, an instability keeps growing). A stable
+     * integration only loses energy to its numerical dissipation and the
+     * transfer; energy made from nothing is an integration gone unstable,
+     * and its answer is wrong. The same on every process.
+     */
+    std::string
+    unstable_growth() const;
+
   private:
     /** @brief Kinetic energy @p kinetic_energy plus the elastic energy,
      *  the dissipated energy and the transfer's share now, against the
@@ -146,7 +165,9 @@ namespace impm
     double
     balance_error(const double kinetic_energy) const;
 
-    const double   tolerance;
+    const double tolerance;
+    /** 'Energy growth limit' (0: never stop). */
+    const double   growth_limit;
     const MPI_Comm communicator;
     /** Whether the initial energy is known (start() or load()). */
     bool started = false;
@@ -170,6 +191,19 @@ namespace impm
     double largest_energy = 0.;
     /** The relative error last reported (0: none yet). */
     double reported_error = 0.;
+    /** The largest energy put in so far: the initial energy plus the work
+     *  from outside, at its largest (unstable_growth()'s reference). */
+    double largest_input = 0.;
+    /** The points' energy above what was put in, in J, at the last
+     *  accepted step (at its start when staggered), and its time. */
+    double error_energy = 0., error_time = 0.;
+    /** error_energy over largest_input at the last accepted step, and at
+     *  the two before it (not kept in checkpoints: a resumed run judges
+     *  from its third step). */
+    double                growth = std::numeric_limits<double>::infinity();
+    std::array<double, 2> growth_before{
+      {std::numeric_limits<double>::infinity(),
+       std::numeric_limits<double>::infinity()}};
     /** Whether the balance is checked at each step's start (explicit). */
     const bool staggered;
     /** Staggered: the relative error at the last accepted step's start. */

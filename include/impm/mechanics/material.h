@@ -55,9 +55,12 @@ namespace impm
      */
     double hardening_variable = 0.;
     /**
-     * @f$\tfrac12\,\tau : \varepsilon_e@f$ as the update found it in
-     * its principal frame (set_coaxial_state()), or NaN where the update
-     * did not (then elastic_energy_density() decomposes @f$b_e@f$).
+     * The stored elastic energy per unit reference volume as the update
+     * found it: @f$\tfrac12\,\tau : \varepsilon_e@f$ in its principal
+     * frame (set_coaxial_state()), or the model's own where its elasticity
+     * is not linear in the logarithmic strain (Cam-clay's potential), or
+     * NaN where the update did not set it (then elastic_energy_density()
+     * decomposes @f$b_e@f$).
      */
     double elastic_energy = std::numeric_limits<double>::quiet_NaN();
   };
@@ -67,10 +70,10 @@ namespace impm
    * @f$\tfrac12\,\tau : \varepsilon_e@f$ with the elastic logarithmic
    * strain @f$\varepsilon_e = \tfrac12 \ln b_e@f$: exact for the elastic
    * laws linear in the logarithmic strain (Hencky, and the plastic models
-   * built on it), an estimate for pressure-dependent elasticity
-   * (Cam-clay). The value the update stored
-   * (ConstitutiveUpdate::elastic_energy) if any, else from the spectral
-   * decomposition of @f$b_e@f$.
+   * built on it). The value the update stored
+   * (ConstitutiveUpdate::elastic_energy: a pressure-dependent elasticity
+   * stores its own potential, as Cam-clay does) if any, else from the
+   * spectral decomposition of @f$b_e@f$.
    */
   double
   elastic_energy_density(const ConstitutiveUpdate &update);
