@@ -15,7 +15,13 @@
 #  3. the same in explicit MUSL steps (400 steps of 0.05 s, a checkpoint
 #     every 50, stopped after step 120, resumed from step 100): a resumed
 #     run does not take the half step of a new run's first step, and its
-#     energy balance (kept at each step's start) goes on as before.
+#     energy balance (kept at each step's start) goes on as before;
+#  4. finer steps after a resume (doc/running.md allows it): the
+#     trapezoidal run in steps of 0.2 s to 20 s, stopped after step 30,
+#     resumed from step 25 (t = 5 s) with 'Time/Time step' = 0.1: the
+#     steps after the checkpoint take 0.1 s (t = 5.1, 5.2, ...) and the run
+#     ends at 20 s after 25 + 150 steps. Until 2026-11-29 the checkpoint's
+#     step size was kept: 100 steps of 0.2 s.
 # Usage: vibrating_bar_resume.sh IMPM SCENE [MPIEXEC N]
 scene=$2
 source "$(dirname "$0")/script_helpers.sh" "$@"
@@ -48,4 +54,16 @@ resume_case() {
 resume_case generalised-alpha 200 25 60 \
   --set "Inertia/Integrator=generalised-alpha" --set "Inertia/Spectral radius=0.8"
 resume_case "explicit MUSL" 400 50 120 --set "Inertia/Integrator=explicit MUSL"
+finer=(--set "Time/End time=20" --set "Time/Time step=0.2" --set "Checkpoint/Interval=25")
+rm -rf results
+"$impm" "$scene" "${finer[@]}" --stop-after-step 30 > log.txt 2>&1 || fail "finer: the first part failed"
+"${launcher[@]}" "$impm" "$scene" "${finer[@]}" --set "Time/Time step=0.1" --resume > log.txt 2>&1 ||
+  { cat log.txt; fail "finer: the resumed run failed"; }
+/usr/bin/python3 - results/steps.csv <<'PY' || fail "finer: the steps after the resume"
+import csv, sys
+times = [float(r["time"]) for r in csv.DictReader(open(sys.argv[1])) if r["converged"] == "1"]
+print("finer steps after a resume: %d steps, t = %g, %g, %g ... %g" % (len(times), times[24], times[25], times[26], times[-1]))
+sys.exit(0 if len(times) == 175 and abs(times[24] - 5) < 1e-9 and abs(times[25] - 5.1) < 1e-9
+         and abs(times[-1] - 20) < 1e-9 else 1)
+PY
 echo "vibrating_bar_resume: passed"

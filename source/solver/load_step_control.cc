@@ -231,6 +231,7 @@ namespace impm
   {
     state.set("control.load factor", load_factor);
     state.set("control.step size", step_size);
+    state.set("control.nominal step", nominal_step);
     state.set("control.converged steps", static_cast<double>(n_converged));
     if (parameters.steady_steps > 0)
       {
@@ -246,7 +247,21 @@ namespace impm
   LoadStepControl::load(const RunState &state)
   {
     load_factor = state.get_double("control.load factor");
-    step_size   = state.get_double("control.step size");
+    // The steps still to come may be made finer or coarser on a resume
+    // (doc/running.md): a step at its nominal size takes the scene's, a
+    // cut one at most it. (Checkpoints before 2026-11-29 hold no nominal
+    // step.)
+    const double saved_step    = state.get_double("control.step size");
+    double       saved_nominal = -1.;
+    try
+      {
+        saved_nominal = state.get_double("control.nominal step");
+      }
+    catch (const CollectiveError &)
+      {}
+    step_size = std::abs(saved_step - saved_nominal) <= 1e-12 * saved_step ?
+                  nominal_step :
+                  std::min(saved_step, nominal_step);
     n_converged =
       static_cast<unsigned int>(state.get_double("control.converged steps"));
     if (parameters.steady_steps > 0)

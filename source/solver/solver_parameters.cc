@@ -43,7 +43,10 @@ namespace impm
                           "For loads so small next to the internal forces "
                           "that round-off in f_int, about 1e-15 |f_int|, "
                           "exceeds 'Tolerance' |f_ext|; a step that fails "
-                          "there says so.");
+                          "there says so. Without it, |r| below the internal "
+                          "force of a strain of 64 machine epsilons (E_max "
+                          "times the points' volume to the power (D-1)/D) "
+                          "is converged: the stresses' own round-off.");
         prm.declare_entry("Maximum iterations",
                           "20",
                           Patterns::Integer(1, 1000),

@@ -34,7 +34,7 @@ namespace impm
       "                                  processes); the scene must be the\n"
       "                                  one the checkpoint was written from\n"
       "                                  but for the entries doc/running.md\n"
-      "                                  lists (load steps, end time, Output,\n"
+      "                                  lists (load steps, time step, Output,\n"
       "                                  Checkpoint, Testing)\n"
       "  --resume-with-changes           --resume, accepting any changed\n"
       "                                  entry of the scene\n"

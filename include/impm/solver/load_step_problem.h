@@ -250,6 +250,11 @@ namespace impm
      *  (no load, no prescribed face moving): the internal force of a
      *  strain of 1e-5 (set in begin(); 0 for a driven step). */
     double unloaded_reference = 0.;
+    /** The round-off of the stresses' forces: the internal force of a
+     *  strain of 64 machine epsilons (set in begin()). A residual below it
+     *  is converged: a stiff body in free flight has round-off stresses
+     *  whose forces no iteration lowers, far below any real strain's. */
+    double stress_round_off = 0.;
     /** The prescribed faces already reported as moving no material. */
     std::array<bool, 6> warned_faces{};
 
