@@ -295,6 +295,7 @@ expect load_factor_infinite "Parameter 'Time/Load factor' = '1/t' is not allowed
 # state): refused, naming the face or the body.
 expect load_factor_start_face "Parameter 'Time/Load factor' = '1' is 1 at t = 0, but the displacement of face x\+ \('Grid/Condition x\+'\) starts from the scene's initial state" - -- "$(dirname "$base")/energy_balance_pulled_bar.prm" --set "Time/Load factor=1"
 expect load_factor_start_body "Parameter 'Time/Load factor' = '0.5 \+ t' is 0.5 at t = 0, but the motion of Rigid body 1 starts from the scene's initial state" - -- "$(dirname "$base")/contact_plate_compression.prm" --set "Time/End time=1" --set "Time/Load factor=0.5 + t"
+expect axisymmetric_radial_shaking "Parameter 'Base shaking/Acceleration file' = '.*base_shaking_ramp.txt' has a radial \\(first\\) component, which an axisymmetric scene cannot carry" - -- "$(dirname "$base")/base_shaking_ramp.prm" --set "Grid/Axisymmetric=true" --set "Grid/Condition x-=roller" --set "Body 1/Lower corner=0, 0" --set "Base shaking/Acceleration file=$(dirname "$base")/base_shaking_ramp.txt"
 expect inertia_velocity_in_time "Parameter 'Inertia/Initial velocity' = 't; 0' is not allowed: it must be 0 or 2 expressions in x, y separated by ';'" also_parallel -- "$base" --set "Time/End time=1" --set "Inertia/Enabled=true" --set "Inertia/Initial velocity=t; 0"
 
 # Declared point state: a field no point stores; a checkpoint resumed into

@@ -113,6 +113,16 @@ namespace impm
         return times.back();
       }
 
+      /** @brief Whether a row has a non-zero component @p d. */
+      bool
+      moves_along(const unsigned int d) const
+      {
+        for (const auto &sample : samples)
+          if (sample[d] != 0.)
+            return true;
+        return false;
+      }
+
     private:
       std::vector<double>         times;
       std::vector<Tensor<1, dim>> samples;
@@ -177,7 +187,17 @@ namespace impm
                   "Base shaking/Acceleration file")
         , scale(inputs.prm.get_double("Scale"))
         , grid(inputs.grid)
-      {}
+      {
+        // A rigid base of a body of revolution moves along its axis only.
+        if (inputs.parameters.grid.axisymmetric && scale != 0. &&
+            history.moves_along(0))
+          throw InputError(
+            "Parameter 'Base shaking/Acceleration file' = '" + file_name +
+            "' has a radial (first) component, which an axisymmetric scene "
+            "cannot carry: a rigid base of a body of revolution moves along "
+            "its axis only (the second component); shake a 2D or 3D model "
+            "sideways.");
+      }
 
       std::vector<std::string>
       descriptions() const override
