@@ -277,56 +277,93 @@ namespace impm
       start.kirchhoff_stress = tau;
       record(0, start);
 
+      // A step the model cannot take, or whose state leaves what it
+      // describes, ends the test in one line naming the step.
+      const auto failure = [&](const unsigned int k, const std::string &what) {
+        std::ostringstream message;
+        message << "Material test: step " << k << " of " << n_steps
+                << " (driven strain " << driven_strain(parameters, k)
+                << "): " << what;
+        return CollectiveError(message.str());
+      };
       for (unsigned int k = 1; k <= n_steps; ++k)
-        {
-          const double       x           = driven_strain(parameters, k);
-          const Tensor<2, 3> F_n_inverse = invert(F);
-          ConstitutiveUpdate result;
-          const auto         update = [&](const double lateral_strain) {
-            F = deformation(path, x, lateral_strain);
-            material.update(F * F_n_inverse,
-                            be,
-                            make_array_view(std::as_const(state)),
-                            result);
-            return stress(result, determinant(F), parameters.kirchhoff)[0][0] +
-                   cell;
-          };
-          double residual = update(lateral);
-          for (unsigned int iteration = 0;
-               drained && std::abs(residual) > 1e-11 * cell;
-               ++iteration)
-            {
-              if (iteration == 50)
-                throw CollectiveError(
-                  "Material test: the lateral stress of step " +
-                  std::to_string(k) +
-                  " did not converge in 50 Newton iterations.");
-              // d tau = C : G with G = diag(1, 1, 0) per unit lateral
-              // strain; Cauchy's stress tau/J with dJ/J = 2.
-              Tensor<4, 3> C;
-              material.tangent(result, 3, C);
-              const double J     = determinant(F);
-              double       slope = C[0][0][0][0] + C[0][0][1][1];
-              if (!parameters.kirchhoff)
-                slope = slope / J - 2. * result.kirchhoff_stress[0][0] / J;
-              double step = -residual / slope;
-              // Halve the step while the residual grows.
-              for (unsigned int halving = 0;; ++halving)
-                {
-                  const double trial = update(lateral + step);
-                  if (std::abs(trial) < std::abs(residual) || halving == 30)
-                    {
-                      lateral += step;
-                      residual = trial;
-                      break;
-                    }
-                  step /= 2.;
-                }
-            }
-          be = result.elastic_left_cauchy_green;
-          material.store_state(result, make_array_view(state));
-          record(k, result);
-        }
+        try
+          {
+            const double       x           = driven_strain(parameters, k);
+            const Tensor<2, 3> F_n_inverse = invert(F);
+            ConstitutiveUpdate result;
+            const auto         update = [&](const double lateral_strain) {
+              F = deformation(path, x, lateral_strain);
+              material.update(F * F_n_inverse,
+                              be,
+                              make_array_view(std::as_const(state)),
+                              result);
+              return stress(result,
+                            determinant(F),
+                            parameters.kirchhoff)[0][0] +
+                     cell;
+            };
+            double residual = update(lateral);
+            for (unsigned int iteration = 0;
+                 drained && std::abs(residual) > 1e-11 * cell;
+                 ++iteration)
+              {
+                if (iteration == 50)
+                  throw CollectiveError(
+                    "Material test: the lateral stress of step " +
+                    std::to_string(k) +
+                    " did not converge in 50 Newton iterations.");
+                // d tau = C : G with G = diag(1, 1, 0) per unit lateral
+                // strain; Cauchy's stress tau/J with dJ/J = 2.
+                Tensor<4, 3> C;
+                material.tangent(result, 3, C);
+                const double J     = determinant(F);
+                double       slope = C[0][0][0][0] + C[0][0][1][1];
+                if (!parameters.kirchhoff)
+                  slope = slope / J - 2. * result.kirchhoff_stress[0][0] / J;
+                double step = -residual / slope;
+                // Halve the step while the residual grows.
+                for (unsigned int halving = 0;; ++halving)
+                  {
+                    const double trial = update(lateral + step);
+                    if (std::abs(trial) < std::abs(residual) || halving == 30)
+                      {
+                        lateral += step;
+                        residual = trial;
+                        break;
+                      }
+                    step /= 2.;
+                  }
+              }
+            be = result.elastic_left_cauchy_green;
+            material.store_state(result, make_array_view(state));
+            record(k, result);
+            const Row &row = rows.back();
+            if (!std::isfinite(row.p) || !std::isfinite(row.q))
+              throw failure(k,
+                            "the stress is not finite (p' = " +
+                              number_text(row.p) +
+                              " Pa, q = " + number_text(row.q) +
+                              " Pa): the path leaves what floating "
+                              "point holds; take a smaller strain or "
+                              "stress.");
+            if (row.void_ratio <= 0.)
+              throw failure(k,
+                            "the void ratio fell to " +
+                              number_text(row.void_ratio) +
+                              " at p' = " + number_text(row.p) +
+                              " Pa: the model's compression lines hold "
+                              "no state beyond a void ratio of 0; take a "
+                              "smaller strain or stress.");
+          }
+        catch (const ExceptionBase &exception)
+          {
+            std::ostringstream info;
+            exception.print_info(info);
+            throw failure(k,
+                          "the material's update failed: " +
+                            collapse_white_space(info.str()));
+          }
       return rows;
     }
 
