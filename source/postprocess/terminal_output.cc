@@ -44,6 +44,29 @@ namespace impm
     class TerminalOutput : public Postprocessor<dim>
     {
     public:
+      /** @brief The energy balance's largest error before the checkpoint
+       *  (the totals name the whole run's). */
+      void
+      resume(const RunContext<dim> &, const RunState &state) override
+      {
+        try
+          {
+            largest_energy_error = state.get_double("terminal.energy error");
+            largest_energy_error_step = static_cast<unsigned int>(
+              state.get_double("terminal.energy error step"));
+          }
+        catch (const CollectiveError &)
+          {} // a checkpoint written before 2026-11-29 holds none
+      }
+
+      void
+      save(const RunContext<dim> &, RunState &state) const override
+      {
+        state.set("terminal.energy error", largest_energy_error);
+        state.set("terminal.energy error step",
+                  static_cast<double>(largest_energy_error_step));
+      }
+
       void
       after_step(const RunContext<dim> &context,
                  const StepRecord      &record,
