@@ -150,7 +150,9 @@ namespace impm
                         "100",
                         Patterns::Integer(1, 10000000),
                         "Steps of the path (per cycle on a cyclic path, "
-                        "then a multiple of 4, so that the peaks are steps).");
+                        "then a multiple of 4, so that the peaks are steps). "
+                        "A step the model cannot take is taken again in 2, "
+                        "4, ... 64 sub-steps; the file has a row per step.");
       prm.declare_entry("Number of cycles",
                         "1",
                         Patterns::Integer(1, 100000),
@@ -286,84 +288,115 @@ namespace impm
                 << "): " << what;
         return CollectiveError(message.str());
       };
-      for (unsigned int k = 1; k <= n_steps; ++k)
-        try
+      // One step of the path to the driven strain x: the update (with the
+      // lateral strain that holds the cell pressure on a drained path),
+      // then the new elastic strain and state.
+      ConstitutiveUpdate result;
+      const auto         advance = [&](const double x) {
+        const Tensor<2, 3> F_n_inverse = invert(F);
+        const auto         update = [&](const double lateral_strain) {
+          F = deformation(path, x, lateral_strain);
+          material.update(F * F_n_inverse,
+                          be,
+                          make_array_view(std::as_const(state)),
+                          result);
+          return stress(result, determinant(F), parameters.kirchhoff)[0][0] +
+                 cell;
+        };
+        double residual = update(lateral);
+        for (unsigned int iteration = 0;
+             drained && std::abs(residual) > 1e-11 * cell;
+             ++iteration)
           {
-            const double       x           = driven_strain(parameters, k);
-            const Tensor<2, 3> F_n_inverse = invert(F);
-            ConstitutiveUpdate result;
-            const auto         update = [&](const double lateral_strain) {
-              F = deformation(path, x, lateral_strain);
-              material.update(F * F_n_inverse,
-                              be,
-                              make_array_view(std::as_const(state)),
-                              result);
-              return stress(result,
-                            determinant(F),
-                            parameters.kirchhoff)[0][0] +
-                     cell;
-            };
-            double residual = update(lateral);
-            for (unsigned int iteration = 0;
-                 drained && std::abs(residual) > 1e-11 * cell;
-                 ++iteration)
+            if (iteration == 50)
+              throw CollectiveError(
+                "the lateral stress did not converge in 50 Newton "
+                        "iterations.");
+            // d tau = C : G with G = diag(1, 1, 0) per unit lateral
+            // strain; Cauchy's stress tau/J with dJ/J = 2.
+            Tensor<4, 3> C;
+            material.tangent(result, 3, C);
+            const double J     = determinant(F);
+            double       slope = C[0][0][0][0] + C[0][0][1][1];
+            if (!parameters.kirchhoff)
+              slope = slope / J - 2. * result.kirchhoff_stress[0][0] / J;
+            double step = -residual / slope;
+            // Halve the step while the residual grows.
+            for (unsigned int halving = 0;; ++halving)
               {
-                if (iteration == 50)
-                  throw CollectiveError(
-                    "Material test: the lateral stress of step " +
-                    std::to_string(k) +
-                    " did not converge in 50 Newton iterations.");
-                // d tau = C : G with G = diag(1, 1, 0) per unit lateral
-                // strain; Cauchy's stress tau/J with dJ/J = 2.
-                Tensor<4, 3> C;
-                material.tangent(result, 3, C);
-                const double J     = determinant(F);
-                double       slope = C[0][0][0][0] + C[0][0][1][1];
-                if (!parameters.kirchhoff)
-                  slope = slope / J - 2. * result.kirchhoff_stress[0][0] / J;
-                double step = -residual / slope;
-                // Halve the step while the residual grows.
-                for (unsigned int halving = 0;; ++halving)
+                const double trial = update(lateral + step);
+                if (std::abs(trial) < std::abs(residual) || halving == 30)
                   {
-                    const double trial = update(lateral + step);
-                    if (std::abs(trial) < std::abs(residual) || halving == 30)
-                      {
-                        lateral += step;
-                        residual = trial;
-                        break;
-                      }
-                    step /= 2.;
+                    lateral += step;
+                    residual = trial;
+                    break;
                   }
+                step /= 2.;
               }
-            be = result.elastic_left_cauchy_green;
-            material.store_state(result, make_array_view(state));
-            record(k, result);
-            const Row &row = rows.back();
-            if (!std::isfinite(row.p) || !std::isfinite(row.q))
-              throw failure(k,
-                            "the stress is not finite (p' = " +
-                              number_text(row.p) +
-                              " Pa, q = " + number_text(row.q) +
-                              " Pa): the path leaves what floating "
-                              "point holds; take a smaller strain or "
-                              "stress.");
-            if (row.void_ratio <= 0.)
-              throw failure(k,
-                            "the void ratio fell to " +
-                              number_text(row.void_ratio) +
-                              " at p' = " + number_text(row.p) +
-                              " Pa: the model's compression lines hold "
-                              "no state beyond a void ratio of 0; take a "
-                              "smaller strain or stress.");
           }
-        catch (const ExceptionBase &exception)
-          {
-            std::ostringstream info;
-            exception.print_info(info);
+        be = result.elastic_left_cauchy_green;
+        material.store_state(result, make_array_view(state));
+      };
+      for (unsigned int k = 1; k <= n_steps; ++k)
+        {
+          // A step the model cannot take (a return that fails, a lateral
+          // stress that does not converge) is taken again in 2, 4, ... 64
+          // sub-steps from the same state; only the whole step is written.
+          const double       x_start = driven_strain(parameters, k - 1);
+          const double       x_end   = driven_strain(parameters, k);
+          const Tensor<2, 3> F_start = F;
+          const SymmetricTensor<2, 3> be_start      = be;
+          const std::vector<double>   state_start   = state;
+          const double                lateral_start = lateral;
+          std::string                 why;
+          bool                        done = false;
+          for (unsigned int n_sub = 1; n_sub <= 64 && !done; n_sub *= 2)
+            {
+              F       = F_start;
+              be      = be_start;
+              state   = state_start;
+              lateral = lateral_start;
+              try
+                {
+                  for (unsigned int s = 1; s <= n_sub; ++s)
+                    advance(x_start + (x_end - x_start) * s / n_sub);
+                  done = true;
+                }
+              catch (const ExceptionBase &exception)
+                {
+                  std::ostringstream info;
+                  exception.print_info(info);
+                  why = collapse_white_space(info.str());
+                }
+              catch (const CollectiveError &error)
+                {
+                  why = error.what();
+                }
+            }
+          if (!done)
             throw failure(k,
-                          "the material's update failed: " +
-                            collapse_white_space(info.str()));
-          }
+                          "the material's update failed, in one step and in "
+                          "up to 64 sub-steps: " +
+                            why);
+          record(k, result);
+          const Row &row = rows.back();
+          if (!std::isfinite(row.p) || !std::isfinite(row.q))
+            throw failure(k,
+                          "the stress is not finite (p' = " +
+                            number_text(row.p) +
+                            " Pa, q = " + number_text(row.q) +
+                            " Pa): the path leaves what floating "
+                            "point holds; take a smaller strain or "
+                            "stress.");
+          if (row.void_ratio <= 0.)
+            throw failure(k,
+                          "the void ratio fell to " +
+                            number_text(row.void_ratio) +
+                            " at p' = " + number_text(row.p) +
+                            " Pa: the model's compression lines hold "
+                            "no state beyond a void ratio of 0; take a "
+                            "smaller strain or stress.");
+        }
       return rows;
     }
 
