@@ -26,7 +26,13 @@
 //    A = 2 pi 1.3^2 = 10.61858317 (Archimedes' zones); the whole sphere by
 //    a region: 4 pi 1.3^2 = 21.23716634;
 // 6. box [0.5, 2.5] x [0.5, 3] x [1, 2.5] by the region [0, 4]^3: the whole
-//    surface 2 (2 x 2.5 + 2 x 1.5 + 2.5 x 1.5) = 23.5 (lattice faces).
+//    surface 2 (2 x 2.5 + 2 x 1.5 + 2.5 x 1.5) = 23.5 (lattice faces); by
+//    the region [0.6, 4]^3 the faces whose centres are in it, all but x-
+//    and y-: 23.5 - 2.5 x 1.5 - 2 x 1.5 = 16.75 (until 2026-11-29 a box in
+//    3D took every open face of the points in the region: 23.5); the box
+//    [-1, 2.5] x [0.5, 3] x [1, 2.5] across x = 0 by the region [0, 4]^3:
+//    its surface in x > 0 without the cut, 2.5 x 1.5 + 2 (2.5 x 1.5) +
+//    2 (2.5 x 2.5) = 23.75 (it took the cut's 3.75 too).
 // 8. bodies across the grid's faces (symmetry planes; the part outside is
 //    cut off and carries nothing): the box [-1, 2.5] x [0.5, 3], side y+:
 //    2.5 (it carried 3.5 on the points next to x = 0); the disc centred
@@ -307,4 +313,16 @@ main(int argc, char **argv)
   box_3d.lower_corner = Point<3>(0.5, 0.5, 1.);
   box_3d.upper_corner = Point<3>(2.5, 3., 2.5);
   check("box", box_3d, "region", 23.5, {0., 0., 0., 4., 4., 4.});
+  check("box, the region from 0.6",
+        box_3d,
+        "region",
+        16.75,
+        {0.6, 0.6, 0.6, 4., 4., 4.});
+  Body<3> box_3d_across      = box_3d;
+  box_3d_across.lower_corner = Point<3>(-1., 0.5, 1.);
+  check("box across x = 0",
+        box_3d_across,
+        "region",
+        23.75,
+        {0., 0., 0., 4., 4., 4.});
 }

@@ -178,14 +178,16 @@ namespace impm
             lattice_face[a] *= spacing[d];
       }
 
-    // The boundary points (in the region): those whose lattice
-    // neighbour across a loaded face is outside the body or the grid,
-    // with those faces (a bit per face).
+    // The boundary points: those whose lattice
+    // neighbour across a loaded face is outside the body, with those faces
+    // (a bit per face). A neighbour inside the body but beyond the grid
+    // is across a cut (a symmetry plane the body crosses), which carries
+    // nothing.
     std::vector<std::pair<std::uint64_t, Point<dim>>> boundary_points;
     std::vector<unsigned int>                         open_faces;
     for (const auto &point : points)
       {
-        if (point.body != body || !in_region(point.initial_position))
+        if (point.body != body)
           continue;
         unsigned int faces = 0;
         for (unsigned int f = 0; f < 2 * dim; ++f)
@@ -195,7 +197,7 @@ namespace impm
             Point<dim> neighbour = point.initial_position;
             neighbour[Names::face_axis(f)] +=
               Names::face_sign(f) * spacing[Names::face_axis(f)];
-            if (!loaded.contains(neighbour) || !grid.contains(neighbour))
+            if (!loaded.contains(neighbour))
               faces |= 1u << f;
           }
         if (faces != 0)
@@ -225,7 +227,8 @@ namespace impm
     // the face of its domain that the piece's normal points through
     // most, so the loads add up to the traction times the true length
     // or area. Where the body has no pieces (a box in 3D) each point
-    // carries its open lattice faces, which are exact.
+    // carries its open lattice faces, which are exact: in a region, those
+    // whose centre is in it (as a piece is in when its midpoint is).
     point_areas.clear();
     const std::vector<typename Body<dim>::BoundaryPiece> pieces =
       local.empty() ? std::vector<typename Body<dim>::BoundaryPiece>() :
@@ -238,13 +241,20 @@ namespace impm
       for (const auto &[point, faces] : local)
         for (unsigned int f = 0; f < 2 * dim; ++f)
           if (faces & (1u << f)) // (in axisymmetry: the face's ring)
-            point_areas[point.first][f] +=
-              lattice_face[Names::face_axis(f)] *
-              grid.ring_length(lattice_face_centre(point.second, f, spacing));
+            {
+              const Point<dim> centre =
+                lattice_face_centre(point.second, f, spacing);
+              if (in_region(centre))
+                point_areas[point.first][f] +=
+                  lattice_face[Names::face_axis(f)] * grid.ring_length(centre);
+            }
+    // The pieces go to the boundary points in the region.
     std::vector<std::pair<std::uint64_t, Point<dim>>> candidates;
     for (const auto &[point, faces] : local)
-      candidates.push_back(point);
-    add_piece_areas(pieces, candidates, grid);
+      if (in_region(point.second))
+        candidates.push_back(point);
+    if (!candidates.empty())
+      add_piece_areas(pieces, candidates, grid);
     if (point_areas.empty())
       throw InputError(section + ": no material point of Body " +
                        std::to_string(body + 1) + " lies on its " +
