@@ -145,6 +145,20 @@ namespace impm
       void
       check_fixed_and_prescribed(const Parameters::Grid<dim> &grid)
       {
+        // 'prescribed normal' moves the face's normal component only: a
+        // tangential one given with it would be dropped without a word.
+        for (unsigned int f = 0; f < 2 * dim; ++f)
+          if (grid.face_conditions[f] ==
+              Parameters::FaceCondition::prescribed_normal)
+            for (unsigned int c = 0; c < dim; ++c)
+              if (c != f / 2 && grid.face_displacements[f][c] != 0.)
+                throw InputError(
+                  "'Grid/Displacement " + Names::face(f) + "' has a " +
+                  Names::axis(c) + " component, which 'Grid/Condition " +
+                  Names::face(f) +
+                  "' = 'prescribed normal' does not move (it moves the " +
+                  Names::axis(f / 2) +
+                  " component only): set it to 0, or use 'prescribed'.");
         for (unsigned int f = 0; f < 2 * dim; ++f)
           for (unsigned int g = 0; g < 2 * dim; ++g)
             if (f / 2 != g / 2 && !grid.face_has_region[f] &&

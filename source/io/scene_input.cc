@@ -344,6 +344,11 @@ namespace impm
     void
     parse_file(dealii::ParameterHandler &prm, const std::string &file_name)
     {
+      // A directory opens as an empty stream on Linux.
+      std::error_code error;
+      if (std::filesystem::is_directory(file_name, error))
+        throw InputError("Cannot read the scene file '" + file_name +
+                         "': it is a directory.");
       std::ifstream in(file_name);
       if (!in)
         throw InputError("Cannot read the scene file '" + file_name +

@@ -39,6 +39,10 @@ namespace impm
         const auto &fields = context.output.fields;
         const auto &layout = context.material_points.layout();
         body = fields.body && layout.body_index() != PointLayout::absent;
+        if (fields.body && !body && !fields.all_declared)
+          throw InputError("Output/Fields names 'body', which a scene of one "
+                           "body does not store (its points are all of "
+                           "Body 1).");
         check_declared_names(fields.declared, layout);
         for (const auto &field : layout.written_fields())
           if (fields.all_declared ||

@@ -283,6 +283,13 @@ namespace impm
       throw InputError("'Strength reduction/Enabled' = 'true' needs a "
                        "quasi-static scene: its failure criterion is a load "
                        "step without equilibrium; disable 'Inertia/Enabled'.");
+    // The failure criterion reads the points' displacement, which points
+    // held where they were seeded never show.
+    if (!settings.scene.material_points.move_points)
+      throw InputError(
+        "'Strength reduction/Enabled' = 'true' needs 'Material points/Move "
+        "points' = true: a trial fails when the points' displacement does "
+        "not settle, and points held where they were seeded show none.");
     // Every body's material must say how it weakens (a model that does not
     // throws here), and one at least must weaken: an elastic model comes
     // back unchanged, description and all.
