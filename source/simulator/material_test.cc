@@ -229,6 +229,45 @@ namespace impm
 
 
 
+    namespace
+    {
+      /**
+       * Why a step's row leaves what floating point holds or what the
+       * model describes (empty if it does not).
+       */
+      std::string
+      row_problem(const Row &row)
+      {
+        if (!std::isfinite(row.p) || !std::isfinite(row.q))
+          return "the stress is not finite (p' = " + number_text(row.p) +
+                 " Pa, q = " + number_text(row.q) +
+                 " Pa): the path leaves what floating point holds; take a "
+                 "smaller strain or stress.";
+        if (row.void_ratio <= 0.)
+          return "the void ratio fell to " + number_text(row.void_ratio) +
+                 " at p' = " + number_text(row.p) +
+                 " Pa: the model's compression lines hold no state beyond a "
+                 "void ratio of 0; take a smaller strain or stress.";
+        return "";
+      }
+
+      /** The one line that ends the test at step @p k of @p n_steps. */
+      CollectiveError
+      step_failure(const Parameters  &parameters,
+                   const unsigned int n_steps,
+                   const unsigned int k,
+                   const std::string &what)
+      {
+        std::ostringstream message;
+        message << "Material test: step " << k << " of " << n_steps
+                << " (driven strain " << driven_strain(parameters, k)
+                << "): " << what;
+        return CollectiveError(message.str());
+      }
+    } // namespace
+
+
+
     std::vector<Row>
     drive(const Material &material, const Parameters &parameters)
     {
@@ -279,15 +318,6 @@ namespace impm
       start.kirchhoff_stress = tau;
       record(0, start);
 
-      // A step the model cannot take, or whose state leaves what it
-      // describes, ends the test in one line naming the step.
-      const auto failure = [&](const unsigned int k, const std::string &what) {
-        std::ostringstream message;
-        message << "Material test: step " << k << " of " << n_steps
-                << " (driven strain " << driven_strain(parameters, k)
-                << "): " << what;
-        return CollectiveError(message.str());
-      };
       // One step of the path to the driven strain x: the update (with the
       // lateral strain that holds the cell pressure on a drained path),
       // then the new elastic strain and state.
@@ -374,28 +404,16 @@ namespace impm
                 }
             }
           if (!done)
-            throw failure(k,
-                          "the material's update failed, in one step and in "
-                          "up to 64 sub-steps: " +
-                            why);
+            throw step_failure(parameters,
+                               n_steps,
+                               k,
+                               "the material's update failed, in one step and "
+                               "in up to 64 sub-steps: " +
+                                 why);
           record(k, result);
-          const Row &row = rows.back();
-          if (!std::isfinite(row.p) || !std::isfinite(row.q))
-            throw failure(k,
-                          "the stress is not finite (p' = " +
-                            number_text(row.p) +
-                            " Pa, q = " + number_text(row.q) +
-                            " Pa): the path leaves what floating "
-                            "point holds; take a smaller strain or "
-                            "stress.");
-          if (row.void_ratio <= 0.)
-            throw failure(k,
-                          "the void ratio fell to " +
-                            number_text(row.void_ratio) +
-                            " at p' = " + number_text(row.p) +
-                            " Pa: the model's compression lines hold "
-                            "no state beyond a void ratio of 0; take a "
-                            "smaller strain or stress.");
+          if (const std::string problem = row_problem(rows.back());
+              !problem.empty())
+            throw step_failure(parameters, n_steps, k, problem);
         }
       return rows;
     }
