@@ -407,14 +407,12 @@ namespace impm
       const double start_factor = LoadPath(time).load_factor(0.);
       if (start_factor == 0.)
         return;
-      static const char *const face_names[] = {
-        "x-", "x+", "y-", "y+", "z-", "z+"};
       std::string moved;
       for (unsigned int f = 0; f < 2 * dim && moved.empty(); ++f)
         if (Parameters::is_prescribed(parameters.grid.face_conditions[f]) &&
             parameters.grid.face_displacements[f].norm() > 0.)
-          moved = std::string("the displacement of face ") + face_names[f] +
-                  " ('Grid/Condition " + face_names[f] + "')";
+          moved = "the displacement of face " + Names::face(f) +
+                  " ('Grid/Condition " + Names::face(f) + "')";
       for (unsigned int k = 0;
            k < parameters.rigid_bodies.size() && moved.empty();
            ++k)

@@ -197,15 +197,15 @@ namespace impm
     largest_input =
       std::max(largest_input,
                std::abs(initial_kinetic + initial_elastic + external_work));
-    growth_before = {growth_before[1], growth};
-    growth        = largest_input > 0. && !std::isnan(error_energy) ?
-                      error_energy / largest_input :
-                      std::numeric_limits<double>::infinity();
     if (!staggered)
       {
         error_energy = balance_error(kinetic) - transfer_loss;
         error_time   = end_time;
       }
+    growth_before      = {growth_before[1], growth};
+    growth             = largest_input > 0. && !std::isnan(error_energy) ?
+                           error_energy / largest_input :
+                           std::numeric_limits<double>::infinity();
     const double error = std::abs(relative_error());
     if (error > tolerance && error >= 2. * reported_error)
       {
