@@ -1,4 +1,5 @@
 #include <impm/base/errors.h>
+#include <impm/base/quiet_call.h>
 #include <impm/core/load_path.h>
 
 #include <cmath>
@@ -104,20 +105,10 @@ namespace impm
         load_factor_of_time->initialize("t",
                                         parameters.load_factor,
                                         {{"pi", numbers::PI}});
-        // muparser finds syntax errors only at the first evaluation, and
-        // writes them to std::cerr: they are reported in the line below.
-        std::ostringstream muparser_message;
-        std::streambuf *cerr_buffer = std::cerr.rdbuf(muparser_message.rdbuf());
-        double          value       = 0.;
-        try
-          {
-            value = load_factor_of_time->value(Point<1>(0.));
-          }
-        catch (...)
-          {
-            value = std::numeric_limits<double>::quiet_NaN();
-          }
-        std::cerr.rdbuf(cerr_buffer);
+        // A syntax error shows at the first evaluation (reported in the
+        // line below).
+        double value = std::numeric_limits<double>::quiet_NaN();
+        quiet_call([&]() { value = load_factor_of_time->value(Point<1>(0.)); });
         if (!std::isfinite(value))
           throw InputError("");
       }

@@ -2,10 +2,10 @@
 #include <deal.II/base/exceptions.h>
 
 #include <impm/base/errors.h>
+#include <impm/base/quiet_call.h>
 #include <impm/coupling/initial_velocity.h>
 
 #include <cmath>
-#include <iostream>
 #include <sstream>
 
 namespace impm
@@ -33,26 +33,15 @@ namespace impm
     if (expression == "0")
       return;
     function = std::make_unique<FunctionParser<dim>>(dim);
-    // muparser finds syntax errors (an unknown variable such as t, an
-    // unclosed bracket) only at the first evaluation, and writes them to
-    // std::cerr first: they are reported in the one line below.
-    std::ostringstream muparser_message;
-    std::streambuf    *cerr_buffer = std::cerr.rdbuf(muparser_message.rdbuf());
-    bool               parsed      = true;
-    try
-      {
-        function->initialize(dim == 2 ? "x,y" : "x,y,z",
-                             expression,
-                             {{"pi", numbers::PI}});
-        for (unsigned int d = 0; d < dim; ++d)
-          (void)function->value(Point<dim>(), d);
-      }
-    catch (...)
-      {
-        parsed = false;
-      }
-    std::cerr.rdbuf(cerr_buffer);
-    if (!parsed)
+    // A syntax error (an unknown variable such as t, an unclosed bracket)
+    // shows at the first evaluation (reported in the one line below).
+    if (!quiet_call([&]() {
+          function->initialize(dim == 2 ? "x,y" : "x,y,z",
+                               expression,
+                               {{"pi", numbers::PI}});
+          for (unsigned int d = 0; d < dim; ++d)
+            (void)function->value(Point<dim>(), d);
+        }))
       {
         throw InputError(
           "Parameter 'Inertia/Initial velocity' = '" + expression +
